@@ -1,0 +1,79 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Input validation shared by the Poincare disk packages: bad user data reaches the caller as an exception,
+// in release builds too.
+#ifndef CGAL_POINCARE_DISK_TRAITS_2_INTERNAL_CHECKS_H
+#define CGAL_POINCARE_DISK_TRAITS_2_INTERNAL_CHECKS_H
+
+#include <CGAL/number_utils.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Interval_nt.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+
+/// Thrown when a point given as a point of the Poincare disk is not in the open unit disk
+/// (|p| >= 1) or has a non-finite coordinate.
+class Poincare_disk_domain_error : public std::domain_error
+{
+public:
+  explicit Poincare_disk_domain_error(const std::string& what) : std::domain_error(what) {}
+};
+
+namespace Poincare_disk_internal {
+
+template <class FT>
+bool is_finite_coordinate(const FT& v)
+{
+  return std::isfinite(CGAL::to_double(v));
+}
+
+/// true iff x^2 + y^2 < 1, decided exactly (double input: interval arithmetic, then rationals).
+inline bool is_in_open_disk_xy(double x, double y)
+{
+  if(!std::isfinite(x) || !std::isfinite(y)) return false;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const CGAL::Interval_nt<false> ix(x), iy(y);
+    const CGAL::Uncertain<bool> r = (ix * ix + iy * iy < 1);
+    if(CGAL::is_certain(r)) return CGAL::get_certain(r);
+  }
+  const CGAL::Exact_rational ex(x), ey(y);
+  return ex * ex + ey * ey < 1;
+}
+
+template <class FT>
+bool is_in_open_disk_xy(const FT& x, const FT& y)
+{
+  if(!is_finite_coordinate(x) || !is_finite_coordinate(y)) return false;
+  return x * x + y * y < FT(1);
+}
+
+/// true iff p is a finite point of the open unit disk (decided exactly).
+template <class Point_2>
+bool is_in_open_disk(const Point_2& p)
+{
+  return is_in_open_disk_xy(p.x(), p.y());
+}
+
+template <class Point_2>
+void check_point_in_disk(const Point_2& p, const char* where)
+{
+  if(!is_in_open_disk(p)) {
+    std::ostringstream os;
+    os.precision(17);
+    os << where << ": point (" << CGAL::to_double(p.x()) << ", " << CGAL::to_double(p.y())
+       << ") is not in the open unit disk (|p| < 1 and finite coordinates are required)";
+    throw Poincare_disk_domain_error(os.str());
+  }
+}
+
+} // namespace Poincare_disk_internal
+} // namespace CGAL
+
+#endif

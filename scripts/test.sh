@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The whole test suite: Release build of every test and example (-Wall -Wextra), then CTest.
+source "$(dirname "$0")/common.sh"
+install_missing_packages
+configure_and_build -DBUILD_TESTING=ON -DCGAL_HC_BUILD_EXAMPLES=ON -DCGAL_HC_BUILD_BENCHMARKS=ON --
+cd "$BUILD_DIR"
+ctest --output-on-failure --timeout 1500
