@@ -155,10 +155,11 @@ private:
     const double D = (-np * qy + nq * py) / det, E = (np * qx - nq * px) / det;
     const double cx = -D / 2, cy = -E / 2, r = std::sqrt((std::max)(0.0, cx * cx + cy * cy - 1));
     if(r * scale() > 1e6) { os_ << "L " << sx(qx) << " " << sy(qy) << " "; return; }
-    // The geodesic is the minor arc, counterclockwise around the centre iff cross > 0. SVG's y axis points
-    // down, so a counterclockwise turn in disk coordinates is SVG's positive-angle direction (sweep-flag 1).
+    // The geodesic is the minor arc, counterclockwise around the centre iff cross > 0. The picture shows the
+    // disk as seen in math coordinates (y up), so a counterclockwise turn is drawn counterclockwise, which is
+    // SVG's negative-angle direction (sweep-flag 0; SVG's y axis points down).
     const double cross = (px - cx) * (qy - cy) - (py - cy) * (qx - cx);
-    const int sweep = cross > 0 ? 1 : 0;
+    const int sweep = cross > 0 ? 0 : 1;
     os_ << "A " << r * scale() << " " << r * scale() << " 0 0 " << sweep << " " << sx(qx) << " " << sy(qy) << " ";
   }
 
