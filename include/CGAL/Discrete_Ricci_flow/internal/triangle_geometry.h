@@ -1,0 +1,179 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Per-triangle formulas of the discrete Ricci flow (thesis Section 2.2.3): cosine laws of the three
+// background geometries, angle derivatives with respect to the edge lengths, and the length functions of the
+// schemes (vertex scaling, circle packing with intersection angles, inversive distance) with their derivatives
+// with respect to the conformal factors u.
+#ifndef CGAL_DISCRETE_RICCI_FLOW_INTERNAL_TRIANGLE_GEOMETRY_H
+#define CGAL_DISCRETE_RICCI_FLOW_INTERNAL_TRIANGLE_GEOMETRY_H
+
+#include <CGAL/Discrete_Ricci_flow/flow_types.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace CGAL {
+namespace Ricci_flow {
+namespace internal {
+
+inline double clamp_cos(double c) { return c < -1.0 ? -1.0 : (c > 1.0 ? 1.0 : c); }
+
+// g(l) in the angle derivatives: l (E2), sinh l (H2), sin l (S2)
+inline double length_sine(Background_geometry geo, double l)
+{
+  switch(geo) {
+    case Background_geometry::EUCLIDEAN: return l;
+    case Background_geometry::HYPERBOLIC: return std::sinh(l);
+    default: return std::sin(l);
+  }
+}
+
+/// Corner angles and their derivatives of a triangle with edge lengths `l[0..2]`, `l[i]` opposite corner i.
+/// `theta[i]`: angle at corner i (cosine law). `dtheta[i][j]` = d theta_i / d l_j:
+///   d theta_i / d l_i = g(l_i) / A,  d theta_i / d l_j = -g(l_i) cos theta_k / A  (i, j, k distinct),
+/// with g = id, sinh, sin and A = g(l_j) g(l_k) sin theta_i (symmetric in i by the sine law).
+/// A triangle violating the triangle inequality gets the extended angles (pi, 0, 0) (Luo's C^1 convex
+/// extension) and zero derivatives. Returns false for such a degenerate triangle.
+inline bool triangle_angles(Background_geometry geo, const double l[3], double theta[3], double dtheta[3][3])
+{
+  for(int i = 0; i < 3; ++i) for(int j = 0; j < 3; ++j) dtheta[i][j] = 0;
+  // triangle inequality (and, on the sphere, perimeter < 2 pi)
+  for(int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    if(!(l[i] < l[j] + l[k])) {
+      theta[i] = CGAL_PI; theta[j] = 0; theta[k] = 0;
+      return false;
+    }
+  }
+  if(geo == Background_geometry::SPHERICAL && !(l[0] + l[1] + l[2] < 2 * CGAL_PI)) {
+    theta[0] = theta[1] = theta[2] = CGAL_PI;
+    return false;
+  }
+  // half-angle formulas (accurate for angles near 0 and pi, unlike acos of the cosine law):
+  // tan^2(theta_i / 2) = f(s - l_j) f(s - l_k) / (f(s) f(s - l_i)), f = id (E^2), sinh (H^2), sin (S^2)
+  const double s = 0.5 * (l[0] + l[1] + l[2]);
+  double c[3];
+  for(int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const double num = length_sine(geo, s - l[j]) * length_sine(geo, s - l[k]);
+    const double den = length_sine(geo, s) * length_sine(geo, s - l[i]);
+    theta[i] = 2 * std::atan2(std::sqrt(num), std::sqrt(den));
+    c[i] = std::cos(theta[i]);
+  }
+  for(int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const double A = length_sine(geo, l[j]) * length_sine(geo, l[k]) * std::sin(theta[i]);
+    if(!(A > 0)) return true; // flat limit: derivatives left at 0
+    const double gi = length_sine(geo, l[i]) / A;
+    dtheta[i][i] = gi;
+    dtheta[i][j] = -gi * c[k];
+    dtheta[i][k] = -gi * c[j];
+  }
+  return true;
+}
+
+/// Area of a triangle with lengths l (E2: Heron; H2 and S2: the angle excess |pi - sum of angles|).
+inline double triangle_area(Background_geometry geo, const double l[3], const double theta[3])
+{
+  if(geo == Background_geometry::EUCLIDEAN) {
+    const double s = 0.5 * (l[0] + l[1] + l[2]);
+    const double a2 = s * (s - l[0]) * (s - l[1]) * (s - l[2]);
+    return a2 > 0 ? std::sqrt(a2) : 0.0;
+  }
+  const double sum = theta[0] + theta[1] + theta[2];
+  return geo == Background_geometry::HYPERBOLIC ? CGAL_PI - sum : sum - CGAL_PI;
+}
+
+// ------------------------------------------------------------------ vertex scaling
+// The "Penner coordinate" lambda of an edge: lambda = l / 2 (E2), sinh(l / 2) (H2), sin(l / 2) (S2).
+// Vertex scaling (Bobenko-Pinkall-Springborn 2015): lambda~_ij = e^{(u_i + u_j) / 2} lambda_ij; Ptolemy flips
+// act on lambda.
+inline double length_from_lambda(Background_geometry geo, double lambda)
+{
+  switch(geo) {
+    case Background_geometry::EUCLIDEAN: return 2 * lambda;
+    case Background_geometry::HYPERBOLIC: return 2 * std::asinh(lambda);
+    default: return lambda < 1 ? 2 * std::asin(lambda) : CGAL_PI * 2; // no spherical edge: degenerate
+  }
+}
+
+/// d l_ij / d u_i for vertex scaling at the current length l: l / 2 (E2), tanh(l / 2) (H2), tan(l / 2) (S2).
+inline double vertex_scaling_length_derivative(Background_geometry geo, double l)
+{
+  switch(geo) {
+    case Background_geometry::EUCLIDEAN: return 0.5 * l;
+    case Background_geometry::HYPERBOLIC: return std::tanh(0.5 * l);
+    default: return l < CGAL_PI ? std::tan(0.5 * l) : 0.0;
+  }
+}
+
+// ------------------------------------------------------------------ circle packings
+/// radius from the conformal factor: r = e^u (E2), u = log tanh(r / 2) (H2), u = log tan(r / 2) (S2).
+inline double radius_from_u(Background_geometry geo, double u)
+{
+  switch(geo) {
+    case Background_geometry::EUCLIDEAN: return std::exp(u);
+    case Background_geometry::HYPERBOLIC: return u < 0 ? 2 * std::atanh(std::exp(u)) : 40.0;
+    default: return 2 * std::atan(std::exp(u));
+  }
+}
+
+inline double u_from_radius(Background_geometry geo, double r)
+{
+  switch(geo) {
+    case Background_geometry::EUCLIDEAN: return std::log(r);
+    case Background_geometry::HYPERBOLIC: return std::log(std::tanh(0.5 * r));
+    default: return std::log(std::tan(0.5 * r));
+  }
+}
+
+/// dr / du: r (E2), sinh r (H2), sin r (S2)
+inline double radius_derivative(Background_geometry geo, double r)
+{
+  switch(geo) {
+    case Background_geometry::EUCLIDEAN: return r;
+    case Background_geometry::HYPERBOLIC: return std::sinh(r);
+    default: return std::sin(r);
+  }
+}
+
+/// Length of an edge between circles of radii ri, rj with inversive distance I (I = cos Phi for an
+/// intersection angle Phi, I = 1 tangent): E2 l^2 = ri^2 + rj^2 + 2 I ri rj; H2 cosh l = cosh ri cosh rj +
+/// I sinh ri sinh rj; S2 cos l = cos ri cos rj - I sin ri sin rj. Also d l / d ri and d l / d rj.
+inline double circle_packing_length(Background_geometry geo, double ri, double rj, double I,
+                                    double& dl_dri, double& dl_drj)
+{
+  double l;
+  switch(geo) {
+    case Background_geometry::EUCLIDEAN: {
+      const double l2 = ri * ri + rj * rj + 2 * I * ri * rj;
+      l = l2 > 0 ? std::sqrt(l2) : 0.0;
+      dl_dri = l > 0 ? (ri + I * rj) / l : 0.0;
+      dl_drj = l > 0 ? (rj + I * ri) / l : 0.0;
+      return l;
+    }
+    case Background_geometry::HYPERBOLIC: {
+      const double ch = std::cosh(ri) * std::cosh(rj) + I * std::sinh(ri) * std::sinh(rj);
+      l = ch > 1 ? std::acosh(ch) : 0.0;
+      const double sl = std::sinh(l);
+      dl_dri = sl > 0 ? (std::sinh(ri) * std::cosh(rj) + I * std::cosh(ri) * std::sinh(rj)) / sl : 0.0;
+      dl_drj = sl > 0 ? (std::sinh(rj) * std::cosh(ri) + I * std::cosh(rj) * std::sinh(ri)) / sl : 0.0;
+      return l;
+    }
+    default: {
+      const double c = clamp_cos(std::cos(ri) * std::cos(rj) - I * std::sin(ri) * std::sin(rj));
+      l = std::acos(c);
+      const double sl = std::sin(l);
+      dl_dri = sl > 0 ? (std::sin(ri) * std::cos(rj) + I * std::cos(ri) * std::sin(rj)) / sl : 0.0;
+      dl_drj = sl > 0 ? (std::sin(rj) * std::cos(ri) + I * std::cos(rj) * std::sin(ri)) / sl : 0.0;
+      return l;
+    }
+  }
+}
+
+} // namespace internal
+} // namespace Ricci_flow
+} // namespace CGAL
+
+#endif // CGAL_DISCRETE_RICCI_FLOW_INTERNAL_TRIANGLE_GEOMETRY_H

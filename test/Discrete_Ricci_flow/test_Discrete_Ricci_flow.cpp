@@ -1,0 +1,288 @@
+// Tests of the Discrete_Ricci_flow package. Every expected value is a theorem value (Gauss-Bonnet, the Bolza
+// surface, a flat torus of known shape) or an independent recomputation (cosine laws in long double, finite
+// differences), never an output of the code under test.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Discrete_Ricci_flow.h>
+
+#include "cgal_hc_test.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+typedef CGAL::Epick K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+namespace RF = CGAL::Ricci_flow;
+using RF::Background_geometry;
+
+static const double two_pi = 2 * CGAL_PI;
+
+static Mesh read_mesh(const std::string& path)
+{
+  Mesh m;
+  if(!CGAL::IO::read_polygon_mesh(path, m)) throw std::runtime_error("cannot read " + path);
+  return m;
+}
+static std::string cgal_mesh(const std::string& name) { return std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/" + name; }
+static std::string shared_mesh(const std::string& name) { return std::string(CGAL_HC_SHARED_DATA_DIR) + "/meshes/" + name; }
+
+// independent angle of a hyperbolic / Euclidean triangle at the corner opposite to a (cosine law, long double)
+static long double ref_angle(Background_geometry geo, long double a, long double b, long double c)
+{
+  long double cs;
+  if(geo == Background_geometry::HYPERBOLIC) cs = (std::cosh(b) * std::cosh(c) - std::cosh(a)) / (std::sinh(b) * std::sinh(c));
+  else cs = (b * b + c * c - a * a) / (2 * b * c);
+  if(cs > 1) cs = 1;
+  if(cs < -1) cs = -1;
+  return std::acos(cs);
+}
+
+// max |K_i - target| and total area, recomputed from the intrinsic triangulation's lengths
+template <class Metric>
+void reference_curvature(const Metric& r, double& max_err, double& area, bool& triangle_inequalities)
+{
+  const Mesh& m = r.intrinsic_mesh();
+  std::vector<long double> angle_sum(m.number_of_vertices(), 0);
+  long double a = 0;
+  triangle_inequalities = true;
+  for(auto f : m.faces()) {
+    auto h = m.halfedge(f);
+    const long double l0 = r.length(h), l1 = r.length(m.next(h)), l2 = r.length(m.prev(h));
+    if(!(l0 < l1 + l2 && l1 < l0 + l2 && l2 < l0 + l1)) triangle_inequalities = false;
+    // corner opposite h is target(next(h)), etc.
+    const long double t0 = ref_angle(r.background_geometry(), l0, l1, l2), t1 = ref_angle(r.background_geometry(), l1, l2, l0),
+                      t2 = ref_angle(r.background_geometry(), l2, l0, l1);
+    angle_sum[m.target(m.next(h))] += t0; angle_sum[m.target(m.prev(h))] += t1; angle_sum[m.target(h)] += t2;
+    a += CGAL_PI - (t0 + t1 + t2);
+  }
+  max_err = 0;
+  for(auto v : m.vertices())
+    max_err = (std::max)(max_err, double(std::abs(two_pi - angle_sum[v] - r.target_curvatures()[v])));
+  area = double(a);
+}
+
+static void check_uniformization(const std::string& path, long genus)
+{
+  Mesh tm = read_mesh(path);
+  auto r = RF::hyperbolic_uniformization(tm);
+  const auto& st = r.statistics();
+  CGAL_HC_CHECK_MSG(st.converged(), path << ": " << RF::to_string(st.status));
+  CGAL_HC_CHECK_MSG(st.max_curvature_error < 1e-9 * two_pi, path << ": " << st.max_curvature_error);
+  CGAL_HC_CHECK(r.genus() == genus);
+  CGAL_HC_CHECK(r.intrinsic_mesh().is_valid(false));
+  CGAL_HC_CHECK(r.intrinsic_mesh().number_of_vertices() == tm.number_of_vertices());
+  double err, area; bool tri;
+  reference_curvature(r, err, area, tri);
+  CGAL_HC_CHECK_MSG(tri, path << ": an intrinsic triangle violates the triangle inequality");
+  CGAL_HC_CHECK_MSG(err < 1e-9 * two_pi, path << ": recomputed curvature error " << err);
+  CGAL_HC_CHECK_MSG(std::abs(area - 4 * CGAL_PI * (genus - 1)) < 1e-8, path << ": area " << area);
+  CGAL_HC_CHECK_MSG(st.iterations <= 12, path << ": " << st.iterations << " iterations");
+  std::cout << "  " << path << ": " << st.iterations << " iterations, error " << st.max_curvature_error
+            << ", area - 4 pi (g-1) = " << area - 4 * CGAL_PI * (genus - 1) << ", flips " << st.number_of_flips
+            << ", " << st.time_seconds << " s" << std::endl;
+}
+
+CGAL_HC_TEST_CASE(uniformization_eight) { check_uniformization(cgal_mesh("eight.off"), 2); }
+CGAL_HC_TEST_CASE(uniformization_elephant) { check_uniformization(cgal_mesh("elephant.off"), 3); }
+CGAL_HC_TEST_CASE(uniformization_anchor) { check_uniformization(cgal_mesh("anchor.off"), 4); }
+CGAL_HC_TEST_CASE(uniformization_elephant_cid) { check_uniformization(shared_mesh("elephant_cid.obj"), 3); }
+
+// elephant_cid.obj has angles down to 1.5 degrees: Newton on the fixed triangulation must not report success
+CGAL_HC_TEST_CASE(elephant_cid_needs_flips)
+{
+  Mesh tm = read_mesh(shared_mesh("elephant_cid.obj"));
+  auto r = RF::hyperbolic_uniformization(tm, CGAL::parameters::do_flip(false).number_of_iterations(25));
+  CGAL_HC_CHECK_MSG(!r.converged(), "converged without flips?");
+  CGAL_HC_CHECK(r.statistics().number_of_flips == 0);
+  CGAL_HC_CHECK(std::isfinite(r.statistics().max_curvature_error));
+  bool finite = true;
+  for(auto e : r.intrinsic_mesh().edges()) finite = finite && std::isfinite(r.length(e));
+  CGAL_HC_CHECK(finite);
+}
+
+// the vertex-scaling metric depends only on the discrete conformal class: scaling the positions or inverting
+// them in a sphere leaves the uniformized edge lengths unchanged
+CGAL_HC_TEST_CASE(moebius_invariance)
+{
+  Mesh tm = read_mesh(cgal_mesh("eight.off"));
+  auto lengths = [](const Mesh& m) {
+    std::vector<double> l(m.number_of_edges());
+    auto r = RF::compute_metric(m, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0),
+                                CGAL::make_property_map(l));
+    if(!r.converged()) throw std::runtime_error("no convergence");
+    return l;
+  };
+  // Surface_mesh edge indices are plain indices: a vector works as a property map through make_property_map
+  const std::vector<double> l0 = lengths(tm);
+  Mesh scaled = tm, inverted = tm;
+  for(auto v : scaled.vertices()) { const Point_3& p = scaled.point(v); scaled.point(v) = Point_3(3.7 * p.x(), 3.7 * p.y(), 3.7 * p.z()); }
+  const Point_3 c(0.3, -2.5, 1.7); const double R2 = 4.0;
+  for(auto v : inverted.vertices()) {
+    const auto d = inverted.point(v) - c;
+    inverted.point(v) = c + (R2 / d.squared_length()) * d;
+  }
+  const std::vector<double> l1 = lengths(scaled), l2 = lengths(inverted);
+  double d1 = 0, d2 = 0, dmove = 0;
+  for(std::size_t i = 0; i < l0.size(); ++i) {
+    d1 = (std::max)(d1, std::abs(l0[i] - l1[i])); d2 = (std::max)(d2, std::abs(l0[i] - l2[i]));
+  }
+  // the inversion does move the input lengths (non-trivial test)
+  for(auto e : tm.edges()) {
+    const auto h = tm.halfedge(e);
+    const double a = std::sqrt(CGAL::squared_distance(tm.point(tm.source(h)), tm.point(tm.target(h))));
+    const double b = std::sqrt(CGAL::squared_distance(inverted.point(tm.source(h)), inverted.point(tm.target(h))));
+    dmove = (std::max)(dmove, std::abs(a / b));
+  }
+  CGAL_HC_CHECK_MSG(d1 < 1e-9, "scaling changed the metric by " << d1);
+  CGAL_HC_CHECK_MSG(d2 < 1e-9, "inversion changed the metric by " << d2);
+  CGAL_HC_CHECK(dmove > 1.5);
+}
+
+// the Hessian assembled by the engine equals finite differences of the curvature (all geometries, schemes)
+CGAL_HC_TEST_CASE(hessian_matches_finite_differences)
+{
+  Mesh tm = read_mesh(cgal_mesh("eight.off"));
+  const Background_geometry geos[3] = {Background_geometry::EUCLIDEAN, Background_geometry::HYPERBOLIC, Background_geometry::SPHERICAL};
+  const RF::Scheme schemes[4] = {RF::Scheme::VERTEX_SCALING, RF::Scheme::TANGENTIAL_CIRCLE_PACKING,
+                                 RF::Scheme::THURSTON_CIRCLE_PACKING, RF::Scheme::INVERSIVE_DISTANCE};
+  for(auto geo : geos) for(auto sch : schemes) {
+    Mesh m = tm;
+    RF::internal::Flow_engine<Point_3> eng(m, geo, sch, false);
+    // a small, non-uniform state: input lengths scaled down, radii = 0.3 * shortest incident edge
+    double scale = 0.05;
+    for(auto e : m.edges()) {
+      const auto h = m.halfedge(e);
+      const double l = std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
+      eng.edge_data[e] = sch == RF::Scheme::VERTEX_SCALING ? 0.5 * scale * l : 1.0 + 0.1 * (std::size_t(e) % 3);
+    }
+    for(auto v : m.vertices())
+      eng.u[v] = sch == RF::Scheme::VERTEX_SCALING ? 0.1 * std::sin(double(v))
+                 : RF::internal::u_from_radius(geo, 0.02 * (1.0 + 0.2 * std::sin(double(v))));
+    eng.compute_lengths(); eng.compute_curvature();
+    std::vector<Eigen::Triplet<double> > trip;
+    eng.hessian_triplets(trip);
+    std::map<std::pair<int, int>, double> H;
+    for(auto& t : trip) H[{t.row(), t.col()}] += t.value();
+    double max_diff = 0, max_entry = 0;
+    for(int j : {0, 17, 123}) {
+      const double h = 1e-6;
+      const double uj = eng.u[j];
+      eng.u[j] = uj + h; eng.compute_lengths(); eng.compute_curvature(); const std::vector<double> kp = eng.K;
+      eng.u[j] = uj - h; eng.compute_lengths(); eng.compute_curvature(); const std::vector<double> km = eng.K;
+      eng.u[j] = uj;
+      for(std::size_t i = 0; i < kp.size(); ++i) {
+        const double fd = (kp[i] - km[i]) / (2 * h);
+        const double an = H.count({int(i), j}) ? H[{int(i), j}] : 0.0;
+        max_diff = (std::max)(max_diff, std::abs(fd - an));
+        max_entry = (std::max)(max_entry, std::abs(an));
+      }
+    }
+    CGAL_HC_CHECK_MSG(max_diff < 1e-5 * (1 + max_entry), "geometry " << int(geo) << " scheme " << int(sch)
+                      << ": |Hessian - finite differences| = " << max_diff << " (max entry " << max_entry << ")");
+    CGAL_HC_CHECK(max_entry > 0.1);
+  }
+}
+
+// ------------------------------------------------------------------ bad input
+static Mesh icosahedron_like_sphere()
+{
+  // an octahedron (genus 0)
+  Mesh m;
+  auto v = [&](double x, double y, double z) { return m.add_vertex(Point_3(x, y, z)); };
+  auto px = v(1, 0, 0), nx = v(-1, 0, 0), py = v(0, 1, 0), ny = v(0, -1, 0), pz = v(0, 0, 1), nz = v(0, 0, -1);
+  m.add_face(px, py, pz); m.add_face(py, nx, pz); m.add_face(nx, ny, pz); m.add_face(ny, px, pz);
+  m.add_face(py, px, nz); m.add_face(nx, py, nz); m.add_face(ny, nx, nz); m.add_face(px, ny, nz);
+  return m;
+}
+
+CGAL_HC_TEST_CASE(bad_input)
+{
+  const Mesh eight = read_mesh(cgal_mesh("eight.off"));
+  // genus 0
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(icosahedron_like_sphere()), RF::Ricci_flow_error);
+  // open
+  Mesh open = eight;
+  CGAL::Euler::remove_face(open.halfedge(*open.faces().begin()), open);
+  open.collect_garbage();
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(open), RF::Ricci_flow_error);
+  // two components
+  Mesh two = eight;
+  {
+    Mesh other = eight;
+    for(auto v : other.vertices()) other.point(v) = other.point(v) + K::Vector_3(10, 0, 0);
+    CGAL::copy_face_graph(other, two);
+  }
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(two), RF::Ricci_flow_error);
+  // degenerate face: move a vertex onto the line through two neighbours
+  Mesh degenerate = eight;
+  {
+    auto h = degenerate.halfedge(*degenerate.faces().begin());
+    const Point_3 a = degenerate.point(degenerate.source(h)), b = degenerate.point(degenerate.target(h));
+    degenerate.point(degenerate.target(degenerate.next(h))) = CGAL::midpoint(a, b);
+  }
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(degenerate), RF::Ricci_flow_error);
+  // Gauss-Bonnet violations: E^2 on genus 2 with K = 0; H^2 with total target curvature >= ... too small
+  std::vector<double> dummy(eight.number_of_edges());
+  CGAL_HC_CHECK_THROWS(RF::compute_metric(eight, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0),
+                                          CGAL::make_property_map(dummy),
+                                          RF::parameters::background_geometry(Background_geometry::EUCLIDEAN)),
+                       RF::Ricci_flow_error);
+  const double too_much = -4 * CGAL_PI * 1.5 / double(eight.number_of_vertices()); // sum = -6 pi < 2 pi chi = -4 pi
+  CGAL_HC_CHECK_THROWS(RF::compute_metric(eight, CGAL::Constant_property_map<Mesh::Vertex_index, double>(too_much),
+                                          CGAL::make_property_map(dummy)),
+                       RF::Ricci_flow_error);
+  // non-finite target
+  CGAL_HC_CHECK_THROWS(RF::compute_metric(eight, CGAL::Constant_property_map<Mesh::Vertex_index, double>(std::nan("")),
+                                          CGAL::make_property_map(dummy)),
+                       RF::Ricci_flow_error);
+  // a quad mesh
+  Mesh quad;
+  {
+    auto a = quad.add_vertex(Point_3(0, 0, 0)), b = quad.add_vertex(Point_3(1, 0, 0)), c = quad.add_vertex(Point_3(1, 1, 0)),
+         d = quad.add_vertex(Point_3(0, 1, 0));
+    quad.add_face(a, b, c, d);
+  }
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(quad), RF::Ricci_flow_error);
+  // genus 1 asked for a flat metric works, genus 2 does not
+  CGAL_HC_CHECK_THROWS(RF::flat_metric(eight), RF::Ricci_flow_error);
+  // an empty mesh
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(Mesh()), RF::Ricci_flow_error);
+}
+
+// non-convergence is a status, with finite lengths
+CGAL_HC_TEST_CASE(iteration_limit_status)
+{
+  Mesh tm = read_mesh(cgal_mesh("eight.off"));
+  int calls = 0;
+  auto r = RF::hyperbolic_uniformization(tm, CGAL::parameters::number_of_iterations(2).callback(
+                                                [&](const RF::Flow_progress& p) { ++calls; return p.iteration < 100; }));
+  CGAL_HC_CHECK(r.statistics().status == RF::Flow_status::MAXIMUM_ITERATIONS);
+  CGAL_HC_CHECK(r.statistics().iterations == 2);
+  CGAL_HC_CHECK(calls == 2);
+  CGAL_HC_CHECK(r.statistics().max_curvature_error > 1e-9);
+  CGAL_HC_CHECK(r.statistics().error_history.size() == 3);
+  CGAL_HC_CHECK(r.statistics().energy_history.back() < 0);
+  auto c = RF::hyperbolic_uniformization(tm, CGAL::parameters::callback([](const RF::Flow_progress&) { return false; }));
+  CGAL_HC_CHECK(c.statistics().status == RF::Flow_status::CANCELLED);
+  CGAL_HC_CHECK(c.statistics().iterations == 1);
+}
+
+// the flow works on other FaceGraph models
+CGAL_HC_TEST_CASE(polyhedron_input)
+{
+  Mesh tm = read_mesh(cgal_mesh("eight.off"));
+  CGAL::Polyhedron_3<K> P;
+  CGAL::copy_face_graph(tm, P);
+  auto r = RF::hyperbolic_uniformization(P);
+  CGAL_HC_CHECK(r.converged());
+  double err, area; bool tri;
+  reference_curvature(r, err, area, tri);
+  CGAL_HC_CHECK(std::abs(area - 4 * CGAL_PI) < 1e-8);
+}
+
+int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }
