@@ -8,6 +8,8 @@
 #define CGAL_POINCARE_DISK_TRAITS_2_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_structural_filtering_traits.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/Poincare_disk_isometry_2.h>
 #include <CGAL/Poincare_disk_traits_2/internal/checks.h>
 #include <CGAL/Poincare_disk_traits_2/internal/constructions.h>
@@ -915,6 +917,27 @@ public:
 
 private:
   Kernel kernel_;
+};
+
+/// Spatial sorting for the range insertions of CGAL's triangulations (found by argument-dependent lookup,
+/// more specialized than CGAL's generic `spatial_sort`): every point is validated once (|p| < 1, finite;
+/// `Poincare_disk_domain_error` otherwise, before the triangulation is touched), then the points are sorted
+/// along a Hilbert curve of their Poincare coordinates by the kernel. Any order with spatial locality serves
+/// the insertion; the Euclidean one of the Poincare coordinates is the cheapest.
+template <class RandomAccessIterator, class K>
+void spatial_sort(RandomAccessIterator begin, RandomAccessIterator end, const Poincare_disk_traits_2<K>& gt)
+{
+  for(RandomAccessIterator it = begin; it != end; ++it)
+    Poincare_disk_internal::check_point_in_disk(*it, "Poincare_disk_traits_2 (range insertion)");
+  CGAL::spatial_sort(begin, end, gt.kernel());
+}
+
+/// Structural filtering: point location first walks with a plain double orientation of the Poincare
+/// coordinates (a heuristic at the scale of one face), then finishes with the exact Klein orientation.
+template <>
+struct Triangulation_structural_filtering_traits<Poincare_disk_traits_2<Epick> >
+{
+  typedef Tag_true Use_structural_filtering_tag;
 };
 
 } // namespace CGAL
