@@ -263,16 +263,17 @@ public:
     // the edge joining them is the answer. Exact, on rationals (not a hot path).
     static int non_hyperbolic_edge(const Point_2& p0, const Point_2& p1, const Point_2& p2)
     {
-      typedef Exact_rational Q;
-      const Q x[3] = {Q(CGAL::to_double(p0.x())), Q(CGAL::to_double(p1.x())), Q(CGAL::to_double(p2.x()))};
-      const Q y[3] = {Q(CGAL::to_double(p0.y())), Q(CGAL::to_double(p1.y())), Q(CGAL::to_double(p2.y()))};
+      // exact field: the kernel's own FT when it is exact, rationals built exactly from doubles otherwise
+      typedef std::conditional_t<is_double, Exact_rational, FT> Q;
+      const Q x[3] = {Q(p0.x()), Q(p1.x()), Q(p2.x())};
+      const Q y[3] = {Q(p0.y()), Q(p1.y()), Q(p2.y())};
       const Poincare_disk_internal::Circle_coefficients<Q> cc(x[0], y[0], x[1], y[1], x[2], y[2]);
-      if(cc.A == 0) return 0; // Euclidean-collinear: the "circle" is a line; any answer is as good
+      if(cc.A == Q(0)) return 0; // Euclidean-collinear: the "circle" is a line; any answer is as good
       // centre c = (-B, -C) / (2A); vectors from c to the vertices, scaled by 2A * sign(A) > 0
       const int sa = CGAL::sign(cc.A) == POSITIVE ? 1 : -1;
       Q vx[3], vy[3];
-      for(int i = 0; i < 3; ++i) { vx[i] = sa * (2 * cc.A * x[i] + cc.B); vy[i] = sa * (2 * cc.A * y[i] + cc.C); }
-      const Q dx = -sa * cc.B, dy = -sa * cc.C; // direction of c from the origin
+      for(int i = 0; i < 3; ++i) { vx[i] = Q(sa) * (Q(2) * cc.A * x[i] + cc.B); vy[i] = Q(sa) * (Q(2) * cc.A * y[i] + cc.C); }
+      const Q dx = Q(-sa) * cc.B, dy = Q(-sa) * cc.C; // direction of c from the origin
       auto cross = [](const Q& ax, const Q& ay, const Q& bx, const Q& by) { return CGAL::sign(ax * by - ay * bx); };
       // d strictly counterclockwise between a and b (turning counterclockwise from a to b)
       auto ccw_between = [&](int a, int b) {
