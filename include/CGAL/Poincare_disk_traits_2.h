@@ -55,7 +55,10 @@ namespace CGAL {
 
   Input points on or outside the unit circle, or with non-finite coordinates, make the predicates used at
   insertion (`Less_x_2`, `Less_y_2`, `Compare_x_2`, `Compare_y_2`, `Orientation_2`) and every construction throw
-  `Poincare_disk_domain_error`.
+  `Poincare_disk_domain_error`. Range insertion (`insert(first, last)` and the range constructors) validates all
+  points before the triangulation is modified (see `spatial_sort()` below). CGAL calls no traits function when
+  the first vertex is inserted alone into an empty triangulation: such a bad point is reported by the next
+  insertion, whose predicates involve it.
 
   \cgalModels `DelaunayTriangulationTraits_2`
   \cgalModels `ConstrainedDelaunayTriangulationTraits_2`
