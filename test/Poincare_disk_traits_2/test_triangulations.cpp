@@ -1,0 +1,1 @@
+#include "cgal_hc_test.h"
