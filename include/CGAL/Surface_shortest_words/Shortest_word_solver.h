@@ -1,0 +1,374 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Words of loops in pi_1(S, p) with respect to a canonical system of loops (thesis Algorithm 4).
+#ifndef CGAL_SURFACE_SHORTEST_WORDS_SHORTEST_WORD_SOLVER_H
+#define CGAL_SURFACE_SHORTEST_WORDS_SHORTEST_WORD_SOLVER_H
+
+#include <CGAL/Surface_shortest_words/Hyperbolic_surface.h>
+#include <CGAL/Surface_shortest_words/shortest_homotopic_path.h>
+#include <CGAL/Surface_shortest_words/internal/words.h>
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_shortest_words {
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// Thrown when the given loops are not a canonical system of loops through the base vertex.
+class Invalid_generators_error : public std::invalid_argument
+{
+public:
+  explicit Invalid_generators_error(const std::string& w) : std::invalid_argument(w) {}
+};
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// A word in the generators a1, b1, ..., ag, bg: letter +(i+1) is generator i (a_{i/2+1} for even i,
+/// b_{i/2+1} for odd i), -(i+1) its inverse.
+typedef std::vector<int> Word;
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// "a1 b1 a1^-1 ..." ("1" for the empty word)
+inline std::string to_string(const Word& w)
+{
+  if(w.empty()) return "1";
+  std::ostringstream os;
+  for(std::size_t i = 0; i < w.size(); ++i) {
+    const int g = std::abs(w[i]) - 1;
+    os << (i ? " " : "") << (g % 2 == 0 ? "a" : "b") << (g / 2 + 1) << (w[i] < 0 ? "^-1" : "");
+  }
+  return os.str();
+}
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// the word as labels in the convention of CGAL's `Surface_mesh_topology::Polygonal_schema_with_combinatorial_map`
+/// ("a1", "-a1" for the inverse), usable with `Path_on_surface::push_back_by_label`
+inline std::vector<std::string> to_labels(const Word& w)
+{
+  std::vector<std::string> r;
+  for(int l : w) {
+    const int g = std::abs(l) - 1;
+    r.push_back(std::string(l < 0 ? "-" : "") + (g % 2 == 0 ? "a" : "b") + std::to_string(g / 2 + 1));
+  }
+  return r;
+}
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// options of `Shortest_word_solver`
+struct Shortest_word_options
+{
+  /// shorten the loop to the shortest loop through the base point (Algorithm 2) before reading its word
+  bool use_geometry = true;
+  /// shorten the generators at construction (their lengths and paths are then available)
+  bool shorten_generators = true;
+  /// parameters of the shortest path computations
+  Shortest_path_options path_options;
+};
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// detailed result of `Shortest_word_solver::solve()`
+template <class TriangleMesh>
+struct Word_result
+{
+  Word word;                              ///< the reduced word (the answer)
+  Word crossing_word;                     ///< the word read from the crossings, before reduction
+  Surface_path<TriangleMesh> loop;        ///< the loop whose crossings were read (shortest, if geometry was used)
+  double length = 0;                      ///< its hyperbolic length
+  bool used_geometry = false;             ///< false if the loop was too long for the geometric shortening
+};
+
+/*!
+  \ingroup PkgSurfaceShortestWordsRef
+  Words of loops in pi_1(S, p) in a canonical system of loops a1, b1, ..., ag, bg through a base vertex p
+  (thesis section 2.3.2, Algorithm 4).
+
+  The generators are edge loops of the mesh from p to p, simple and pairwise disjoint except at p, whose
+  union cuts the surface into one disk (a 4g-gon). Walking around that disk with the interior on the left,
+  starting along a1 from p, must read the canonical relator a1 b1 a1^-1 b1^-1 ... ag bg ag^-1 bg^-1 (this
+  fixes the corner convention: the base corner is the corner of the disk between the end of bg^-1 and the
+  start of a1, i.e. the face to the left of the first edge of a1). The constructor checks all of this and
+  throws `Invalid_generators_error` otherwise. With `shorten_generators`, it also computes the shortest loops
+  through p homotopic to the generators (Algorithm 2).
+
+  `solve(loop)` (a loop based at p) follows Algorithm 4: the loop is first replaced by the shortest loop
+  through p in its class (Algorithm 2), then its crossings with the generator loops are read in order:
+  leaving the disk through the side s_k multiplies the current element by the side pairing
+  h_k = (s_1 ... s_k)(s_1 ... s_{j-1})^-1, j the partner side of k. Where the shortest loop passes through a
+  vertex (in particular p) or runs along a generator, it is perturbed around the vertex on the side that
+  crosses fewer generators; the start and the end are joined to the base corner the same way. The word is
+  then freely reduced and Dehn-reduced (a subword longer than half a cyclic conjugate of the relator or its
+  inverse is replaced by the shorter complement). The homotopy class of the answer does not depend on the
+  numerics: any perturbation of the shortest loop is homotopic to it, so the word is exact; only its
+  shortness relies on the geometry.
+
+  `TriangleMesh`, `EdgeLengthMap`: as for `Hyperbolic_surface`.
+*/
+template <class TriangleMesh, class EdgeLengthMap>
+class Shortest_word_solver
+{
+public:
+  typedef Hyperbolic_surface<TriangleMesh, EdgeLengthMap> Surface;
+  typedef typename Surface::vertex_descriptor vertex_descriptor;
+  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
+  typedef typename Surface::face_descriptor face_descriptor;
+  typedef typename Surface::Path Path;
+  typedef typename Surface::Point Point;
+
+  /// `generators[2i]` = a_{i+1}, `generators[2i+1]` = b_{i+1}, as halfedge loops from `base` to `base`.
+  /// Cost: O(total generator length) plus the shortening of the generators.
+  Shortest_word_solver(const Surface& surface, vertex_descriptor base,
+                       const std::vector<std::vector<halfedge_descriptor> >& generators,
+                       const Shortest_word_options& options = Shortest_word_options())
+    : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options)
+  {
+    validate();
+    build_letters();
+    if(opt_.shorten_generators) {
+      for(std::size_t i = 0; i < gens_.size(); ++i) {
+        Shortest_path_result<TriangleMesh> r =
+          shortest_loop_through_base(s_, s_.path_from_halfedges(gens_[i]), opt_.path_options);
+        short_gens_.push_back(r.path);
+        short_lengths_.push_back(r.length);
+      }
+    }
+  }
+
+  int genus() const { return g_; }
+  vertex_descriptor base() const { return p_; }
+  const std::vector<halfedge_descriptor>& generator(std::size_t i) const { return gens_[i]; }
+  /// the shortest loop through p homotopic to generator i (if `shorten_generators`)
+  const Path& shortened_generator(std::size_t i) const { return short_gens_.at(i); }
+  double shortened_generator_length(std::size_t i) const { return short_lengths_.at(i); }
+  /// the relator read around the disk (a1 b1 a1^-1 b1^-1 ... by the check in the constructor)
+  const Word& relator() const { return relator_; }
+
+  /// the reduced word of a loop based at p. \throws Invalid_path_error if the loop is not closed at p
+  Word word(const Path& loop) const { return solve(loop).word; }
+
+  /// the word of a CGAL `Path_on_surface` (a closed path through p)
+  Word word(const CGAL::Surface_mesh_topology::Path_on_surface<TriangleMesh>& loop) const
+  { return word(s_.path_from_path_on_surface(loop)); }
+
+  /// Algorithm 4 with its intermediate results
+  Word_result<TriangleMesh> solve(const Path& loop) const
+  {
+    s_.check_path(loop);
+    if(!loop.front().on_vertex || loop.front().v != p_ || !loop.back().on_vertex || loop.back().v != p_)
+      throw Invalid_path_error("Shortest_word_solver: the loop must start and end at the base vertex");
+    Word_result<TriangleMesh> r;
+    r.loop = loop;
+    if(opt_.use_geometry && loop.size() > 1) {
+      try {
+        Shortest_path_result<TriangleMesh> sp = shortest_loop_through_base(s_, loop, opt_.path_options);
+        r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
+      } catch(const Precision_error&) {
+        r.used_geometry = false; // too long for double precision: read the crossings of the input loop
+      }
+    }
+    if(r.loop.size() == 1) r.loop.push_back(r.loop.front());
+    r.crossing_word = crossing_word(r.loop);
+    r.word = internal::dehn_reduce(r.crossing_word, relator_);
+    return r;
+  }
+
+  /// the word realized as an edge loop: the concatenation of the generator loops (inverse letters
+  /// traversed backwards)
+  std::vector<halfedge_descriptor> realize(const Word& w) const
+  {
+    std::vector<halfedge_descriptor> r;
+    for(int l : w) {
+      const std::vector<halfedge_descriptor>& g = gens_.at(std::size_t(std::abs(l) - 1));
+      if(l > 0) r.insert(r.end(), g.begin(), g.end());
+      else for(auto it = g.rbegin(); it != g.rend(); ++it) r.push_back(opposite(*it, tm_));
+    }
+    return r;
+  }
+
+  /// the raw word read from the crossings of a loop based at p with the generators (no geometry, no
+  /// reduction): exact and linear in the loop size
+  Word crossing_word(const Path& loop) const
+  {
+    Word w;
+    face_descriptor cur = base_face_;
+    for(std::size_t i = 0; i + 1 < loop.size(); ++i) {
+      const face_descriptor f = s_.common_face(loop[i], loop[i + 1], cur);
+      move(loop[i], cur, f, w);
+      cur = f;
+    }
+    move(loop.back(), cur, base_face_, w);
+    return internal::free_reduce(w);
+  }
+
+private:
+  // ---------------------------------------------------------------- letters
+  void emit_crossing(halfedge_descriptor h, Word& w) const
+  {
+    auto it = exit_side_.find(h);
+    if(it == exit_side_.end()) return;
+    internal::append_reduced(w, side_words_[std::size_t(it->second - 1)]);
+  }
+
+  // moves from face a to face b (both containing point p), emitting the letters of the generators crossed
+  void move(const Point& p, face_descriptor a, face_descriptor b, Word& w) const
+  {
+    if(a == b) return;
+    if(!p.on_vertex) {
+      halfedge_descriptor h = p.h;
+      if(face(h, tm_) != a) h = opposite(h, tm_);
+      if(face(h, tm_) != a || face(opposite(h, tm_), tm_) != b) throw Invalid_path_error("Shortest_word_solver: inconsistent path");
+      emit_crossing(h, w);
+      return;
+    }
+    std::vector<halfedge_descriptor> ccw, cw;
+    int nccw = turn(p.v, a, b, true, ccw), ncw = turn(p.v, a, b, false, cw);
+    const std::vector<halfedge_descriptor>& use = (nccw < ncw || (nccw == ncw && ccw.size() <= cw.size())) ? ccw : cw;
+    for(halfedge_descriptor h : use) emit_crossing(h, w);
+  }
+
+  // the halfedges crossed turning around v from face a to face b; returns the number of generator crossings
+  int turn(vertex_descriptor v, face_descriptor a, face_descriptor b, bool ccw, std::vector<halfedge_descriptor>& crossed) const
+  {
+    halfedge_descriptor h = halfedge(a, tm_);
+    while(target(h, tm_) != v) h = next(h, tm_);
+    int n = 0;
+    face_descriptor f = a;
+    std::size_t guard = 0;
+    while(f != b) {
+      const halfedge_descriptor c = ccw ? h : next(h, tm_);
+      crossed.push_back(c);
+      if(exit_side_.count(c)) ++n;
+      h = ccw ? prev(opposite(h, tm_), tm_) : opposite(next(h, tm_), tm_);
+      f = face(h, tm_);
+      if(++guard > 1000000) throw Invalid_path_error("Shortest_word_solver: face not around vertex");
+    }
+    return n;
+  }
+
+  // ---------------------------------------------------------------- validation
+  void validate()
+  {
+    g_ = s_.genus();
+    if(gens_.size() != std::size_t(2 * g_)) {
+      std::ostringstream os;
+      os << "Shortest_word_solver: " << gens_.size() << " loops given, a canonical system of a genus " << g_
+         << " surface has " << 2 * g_;
+      throw Invalid_generators_error(os.str());
+    }
+    std::set<vertex_descriptor> used_vertices;
+    std::set<typename Surface::edge_descriptor> used_edges;
+    for(std::size_t i = 0; i < gens_.size(); ++i) {
+      const std::vector<halfedge_descriptor>& g = gens_[i];
+      std::ostringstream name; name << (i % 2 == 0 ? "a" : "b") << (i / 2 + 1);
+      if(g.empty()) throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " is empty");
+      if(source(g.front(), tm_) != p_ || target(g.back(), tm_) != p_)
+        throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " is not a loop through the base vertex");
+      for(std::size_t k = 0; k < g.size(); ++k) {
+        if(k > 0 && source(g[k], tm_) != target(g[k - 1], tm_))
+          throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " is not a connected halfedge path");
+        if(!used_edges.insert(edge(g[k], tm_)).second)
+          throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " reuses an edge (loops must be simple and disjoint)");
+        if(k + 1 < g.size()) {
+          const vertex_descriptor v = target(g[k], tm_);
+          if(v == p_ || !used_vertices.insert(v).second)
+            throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " meets itself or another loop away from the base vertex");
+        }
+      }
+    }
+    // ends at p in counterclockwise order: outgoing halfedges o -> opposite(prev(o))
+    std::unordered_map<halfedge_descriptor, int> end_of; // +(i+1): start of loop i, -(i+1): end of loop i
+    for(std::size_t i = 0; i < gens_.size(); ++i) {
+      end_of[gens_[i].front()] = int(i) + 1;
+      end_of[opposite(gens_[i].back(), tm_)] = -(int(i) + 1);
+    }
+    std::vector<halfedge_descriptor> ends;
+    {
+      const halfedge_descriptor o0 = gens_[0].front();
+      halfedge_descriptor o = o0;
+      do {
+        if(end_of.count(o)) ends.push_back(o);
+        o = opposite(prev(o, tm_), tm_);
+      } while(o != o0);
+    }
+    if(ends.size() != 4 * std::size_t(g_)) throw Invalid_generators_error("Shortest_word_solver: inconsistent ends at the base vertex");
+    std::unordered_map<halfedge_descriptor, std::size_t> pos;
+    for(std::size_t i = 0; i < ends.size(); ++i) pos[ends[i]] = i;
+    // walk around the disk: leave along e, arrive at the other end of the loop, leave along its cw predecessor
+    relator_.clear();
+    halfedge_descriptor e = gens_[0].front();
+    std::vector<bool> seen(ends.size(), false);
+    for(std::size_t step = 0; step < ends.size(); ++step) {
+      if(seen[pos[e]]) break;
+      seen[pos[e]] = true;
+      const int code = end_of[e];
+      relator_.push_back(code);
+      const std::size_t li = std::size_t(std::abs(code) - 1);
+      const halfedge_descriptor arrive = code > 0 ? opposite(gens_[li].back(), tm_) : gens_[li].front();
+      e = ends[(pos[arrive] + ends.size() - 1) % ends.size()];
+    }
+    Word canonical;
+    for(int i = 0; i < g_; ++i) {
+      canonical.push_back(2 * i + 1); canonical.push_back(2 * i + 2);
+      canonical.push_back(-(2 * i + 1)); canonical.push_back(-(2 * i + 2));
+    }
+    if(relator_.size() != ends.size() || e != gens_[0].front())
+      throw Invalid_generators_error("Shortest_word_solver: the loops do not cut the surface into one disk (boundary word " +
+                                     to_string(relator_) + ")");
+    if(relator_ != canonical)
+      throw Invalid_generators_error("Shortest_word_solver: not a canonical system: the boundary of the cut disk reads " +
+                                     to_string(relator_) + " instead of " + to_string(canonical));
+    base_face_ = face(gens_[0].front(), tm_);
+  }
+
+  void build_letters()
+  {
+    const int n = int(relator_.size());
+    // side k (1-based) has letter relator_[k-1]; partner side j has the inverse letter
+    std::vector<int> partner(n + 1, 0);
+    for(int k = 1; k <= n; ++k)
+      for(int j = 1; j <= n; ++j)
+        if(relator_[j - 1] == -relator_[k - 1]) partner[k] = j;
+    side_words_.assign(n, Word());
+    for(int k = 1; k <= n; ++k) {
+      Word w(relator_.begin(), relator_.begin() + k);
+      const int j = partner[k];
+      for(int i = j - 1; i >= 1; --i) w.push_back(-relator_[i - 1]);
+      side_words_[k - 1] = internal::free_reduce(w);
+    }
+    // sides of each generator halfedge
+    for(std::size_t i = 0; i < gens_.size(); ++i) {
+      const int letter = int(i) + 1;
+      int k_fwd = 0, k_bwd = 0;
+      for(int k = 1; k <= n; ++k) {
+        if(relator_[k - 1] == letter) k_fwd = k;
+        if(relator_[k - 1] == -letter) k_bwd = k;
+      }
+      for(halfedge_descriptor h : gens_[i]) {
+        exit_side_[h] = k_fwd;                   // leaving the face on the left of the loop: side s_k = a
+        exit_side_[opposite(h, tm_)] = k_bwd;    // leaving the face on its right: side s_j = a^-1
+      }
+    }
+  }
+
+  const Surface& s_;
+  const TriangleMesh& tm_;
+  vertex_descriptor p_;
+  std::vector<std::vector<halfedge_descriptor> > gens_;
+  Shortest_word_options opt_;
+  int g_ = 0;
+  Word relator_;
+  std::vector<Word> side_words_;
+  std::unordered_map<halfedge_descriptor, int> exit_side_;
+  face_descriptor base_face_{};
+  std::vector<Path> short_gens_;
+  std::vector<double> short_lengths_;
+};
+
+} // namespace Surface_shortest_words
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_SHORTEST_WORDS_SHORTEST_WORD_SOLVER_H

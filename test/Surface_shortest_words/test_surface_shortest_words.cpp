@@ -1,0 +1,424 @@
+// Tests of Surface_shortest_words. Independent references:
+//  - the regular 4g-gon surfaces have an exactly known geometry: positions of the polygon in the Poincare
+//    disk and the side-pairing isometries (holonomy rho), computed from the polygon only;
+//  - CGAL's Curves_on_surface_topology (are_base_point_homotopic, is_contractible) decides homotopy;
+//  - shortest word lengths by breadth-first search in the Cayley graph, elements compared through rho.
+#include <CGAL/Surface_shortest_words.h>
+#include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
+#include <CGAL/Curves_on_surface_topology.h>
+
+#include "cgal_hc_test.h"
+
+#include <cmath>
+#include <map>
+#include <queue>
+#include <random>
+
+namespace SSW = CGAL::Surface_shortest_words;
+typedef SSW::Regular_polygon_surface RPS;
+typedef RPS::Mesh Mesh;
+typedef Mesh::Property_map<RPS::Edge_index, double> Length_map;
+typedef SSW::Hyperbolic_surface<Mesh, Length_map> Surface;
+typedef SSW::Shortest_word_solver<Mesh, Length_map> Solver;
+typedef Surface::Path Path;
+typedef Surface::Point SPoint;
+typedef RPS::Isometry Isometry;
+typedef RPS::Cplx Cplx;
+typedef CGAL::Surface_mesh_topology::Path_on_surface<Mesh> Path_on_surface;
+
+namespace {
+
+Cplx apply_iso(const Isometry& f, const Cplx& z) { return SSW::internal::apply_isometry(f, z); }
+double dist(const Cplx& a, const Cplx& b) { return SSW::internal::hyperbolic_distance(a, b); }
+
+Isometry rho_word(const RPS& S, const SSW::Word& w)
+{
+  Isometry r;
+  for(int l : w) {
+    const Isometry& g = S.rho_generator(std::abs(l) - 1);
+    r = (r * (l > 0 ? g : g.inverse())).normalized();
+  }
+  return r;
+}
+
+Path vertex_path(const Surface& s, const std::vector<Mesh::Halfedge_index>& hs) { return s.path_from_halfedges(hs); }
+
+Path_on_surface pos(const Mesh& m, const std::vector<Mesh::Halfedge_index>& hs)
+{
+  Path_on_surface p(m);
+  for(auto h : hs) p.push_back(h);
+  return p;
+}
+
+// random closed walk from the base vertex: `len` random steps, then back by a BFS shortest edge path
+std::vector<Mesh::Halfedge_index> random_loop(const Mesh& m, Mesh::Vertex_index base, std::size_t len, std::mt19937& rng)
+{
+  std::vector<Mesh::Halfedge_index> hs;
+  Mesh::Vertex_index v = base;
+  for(std::size_t i = 0; i < len; ++i) {
+    std::vector<Mesh::Halfedge_index> out;
+    for(auto h : CGAL::halfedges_around_source(v, m)) out.push_back(h);
+    auto h = out[rng() % out.size()];
+    hs.push_back(h);
+    v = m.target(h);
+  }
+  // BFS from base, then walk back from v
+  std::map<Mesh::Vertex_index, Mesh::Halfedge_index> parent; // halfedge reaching the vertex
+  std::queue<Mesh::Vertex_index> q; q.push(base); parent[base] = Mesh::null_halfedge();
+  while(!q.empty()) {
+    auto u = q.front(); q.pop();
+    for(auto h : CGAL::halfedges_around_source(u, m))
+      if(!parent.count(m.target(h))) { parent[m.target(h)] = h; q.push(m.target(h)); }
+  }
+  std::vector<Mesh::Halfedge_index> back;
+  while(v != base) { auto h = parent[v]; back.push_back(m.opposite(h)); v = m.source(h); }
+  hs.insert(hs.end(), back.begin(), back.end());
+  return hs;
+}
+
+std::vector<Mesh::Halfedge_index> realize(const RPS& S, const SSW::Word& w)
+{
+  std::vector<Mesh::Halfedge_index> r;
+  for(int l : w) {
+    const auto& g = S.generators[std::size_t(std::abs(l) - 1)];
+    if(l > 0) r.insert(r.end(), g.begin(), g.end());
+    else for(auto it = g.rbegin(); it != g.rend(); ++it) r.push_back(S.mesh.opposite(*it));
+  }
+  return r;
+}
+
+// shortest word lengths up to 2 * radius by meet in the middle over a ball of the Cayley graph (through rho)
+struct Cayley_ball
+{
+  std::vector<Isometry> elems; std::vector<int> len;
+  std::multimap<long long, std::size_t> index;
+  static long long key(const Isometry& f)
+  {
+    const Isometry n = f.normalized();
+    const double a2 = n.alpha_real() * n.alpha_real() + n.alpha_imag() * n.alpha_imag();
+    return (long long)std::llround(a2 * 1e4);
+  }
+  long find(const Isometry& f) const
+  {
+    const long long k = key(f);
+    for(long long kk = k - 1; kk <= k + 1; ++kk) {
+      auto r = index.equal_range(kk);
+      for(auto it = r.first; it != r.second; ++it)
+        if(elems[it->second].distance_to(f) < 1e-6 * (1 + std::abs(f.normalized().alpha_real()))) return long(it->second);
+    }
+    return -1;
+  }
+  Cayley_ball(const RPS& S, int radius)
+  {
+    const int ng = 2 * S.genus();
+    elems.push_back(Isometry()); len.push_back(0); index.emplace(key(Isometry()), 0);
+    std::size_t begin = 0;
+    for(int r = 1; r <= radius; ++r) {
+      const std::size_t end = elems.size();
+      for(std::size_t i = begin; i < end; ++i)
+        for(int l = -ng; l <= ng; ++l) {
+          if(l == 0) continue;
+          const Isometry& g = S.rho_generator(std::abs(l) - 1);
+          const Isometry e = (elems[i] * (l > 0 ? g : g.inverse())).normalized();
+          if(find(e) >= 0) continue;
+          index.emplace(key(e), elems.size()); elems.push_back(e); len.push_back(r);
+        }
+      begin = end;
+    }
+  }
+  // shortest word length of f if <= 2 * radius, else -1
+  int word_length(const Isometry& f) const
+  {
+    int best = -1;
+    for(std::size_t i = 0; i < elems.size(); ++i) {
+      const long j = find((elems[i].inverse() * f).normalized());
+      if(j >= 0 && (best < 0 || len[i] + len[std::size_t(j)] < best)) best = len[i] + len[std::size_t(j)];
+    }
+    return best;
+  }
+};
+
+SSW::Word random_word(int g, int length, std::mt19937& rng)
+{
+  SSW::Word w;
+  while(int(w.size()) < length) {
+    int l = int(rng() % (2 * g)) + 1;
+    if(rng() % 2) l = -l;
+    if(!w.empty() && w.back() == -l) continue;
+    w.push_back(l);
+  }
+  return w;
+}
+
+} // namespace
+
+CGAL_HC_TEST_CASE(regular_polygon_surfaces_are_hyperbolic)
+{
+  for(int g : {2, 3}) {
+    RPS S(g, 4);
+    Surface s(S.mesh, S.length);
+    CGAL_HC_CHECK(s.genus() == g);
+    CGAL_HC_CHECK_MSG(s.max_angle_defect() < 1e-10, s.max_angle_defect());
+    // total area: sum of the angle defects pi - (alpha + beta + gamma) = 4 pi (g - 1) (Gauss-Bonnet)
+    double area = 0;
+    for(auto f : faces(S.mesh)) {
+      auto h = S.mesh.halfedge(f);
+      area += CGAL_PI - s.angle_at_target(h) - s.angle_at_target(S.mesh.next(h)) - s.angle_at_target(S.mesh.prev(h));
+    }
+    CGAL_HC_CHECK_MSG(std::abs(area - 4 * CGAL_PI * (g - 1)) < 1e-9, area);
+    // the holonomy: rho(s_1 ... s_4g) = identity, rho(a1) V_0 = V_1, generators hyperbolic
+    SSW::Word rel;
+    for(int i = 0; i < g; ++i) { rel.push_back(2 * i + 1); rel.push_back(2 * i + 2); rel.push_back(-(2 * i + 1)); rel.push_back(-(2 * i + 2)); }
+    CGAL_HC_CHECK(rho_word(S, rel).distance_to(Isometry()) < 1e-9);
+    CGAL_HC_CHECK(std::abs(apply_iso(S.rho_generator(0), S.polygon[0]) - S.polygon[1]) < 1e-12);
+    CGAL_HC_CHECK(std::abs(apply_iso(S.rho_generator(1), S.polygon[0]) - S.polygon[1]) > 1e-3);
+    for(int i = 0; i < 2 * g; ++i) CGAL_HC_CHECK(S.rho_generator(i).half_trace() > 1);
+    // the pairing of sides k and k+2 is the product of the reflections in side k and in a diameter at angle
+    // pi/2g from the side's perpendicular: cosh(l/2) = cosh(inradius) sin(pi/2g) = 2 cos^2(pi/4g)
+    for(int i = 0; i < 2 * g; ++i)
+      CGAL_HC_CHECK(std::abs(S.rho_generator(i).half_trace() - 2 * std::pow(std::cos(CGAL_PI / (4 * g)), 2)) < 1e-9);
+  }
+}
+
+CGAL_HC_TEST_CASE(bad_metrics_throw)
+{
+  RPS S(2, 3);
+  { Surface s(S.mesh, S.length); CGAL_HC_CHECK(s.genus() == 2); }
+  Mesh m = S.mesh;
+  auto len = m.property_map<RPS::Edge_index, double>("e:hyperbolic_length").first;
+  auto e0 = *edges(m).begin();
+  const double l0 = len[e0];
+  len[e0] = l0 * 1.01; // angle sums change: not hyperbolic any more
+  CGAL_HC_CHECK_THROWS(Surface(m, len), SSW::Invalid_metric_error);
+  len[e0] = 100.0;     // triangle inequality violated
+  CGAL_HC_CHECK_THROWS(Surface(m, len), SSW::Invalid_metric_error);
+  len[e0] = l0;
+  CGAL_HC_CHECK(Surface(m, len).genus() == 2);
+  // an open mesh
+  Mesh open = S.mesh;
+  open.remove_face(*faces(open).begin());
+  open.collect_garbage();
+  auto len2 = open.property_map<RPS::Edge_index, double>("e:hyperbolic_length").first;
+  CGAL_HC_CHECK_THROWS(Surface(open, len2), SSW::Invalid_metric_error);
+}
+
+CGAL_HC_TEST_CASE(shortest_path_inside_the_polygon_is_the_hyperbolic_segment)
+{
+  RPS S(2, 6);
+  Surface s(S.mesh, S.length);
+  std::mt19937 rng(7);
+  // interior vertices (not on the polygon boundary) have a unique position; a path through them stays in
+  // the polygon, which is simply connected, so its homotopy class contains the hyperbolic segment
+  std::vector<Mesh::Vertex_index> interior;
+  for(auto v : vertices(S.mesh)) {
+    const auto& p = S.mesh.point(v);
+    const Cplx z(p.x(), p.y());
+    bool boundary = false;
+    for(auto h : CGAL::halfedges_around_target(v, S.mesh)) {
+      const auto& q = S.mesh.point(S.mesh.source(h));
+      if(dist(z, Cplx(q.x(), q.y())) > 3 * s.length(h)) boundary = true; // neighbour copied elsewhere
+    }
+    if(v != S.base && !boundary && std::abs(z) < 0.6) interior.push_back(v);
+  }
+  CGAL_HC_CHECK(interior.size() > 10);
+  int tested = 0;
+  for(int trial = 0; trial < 30; ++trial) {
+    Path path;
+    Mesh::Vertex_index v = interior[rng() % interior.size()];
+    path.push_back(SPoint::vertex(v));
+    for(int k = 0; k < 12; ++k) {
+      std::vector<Mesh::Vertex_index> nb;
+      for(auto h : CGAL::halfedges_around_source(v, S.mesh))
+        if(std::find(interior.begin(), interior.end(), S.mesh.target(h)) != interior.end()) nb.push_back(S.mesh.target(h));
+      if(nb.empty()) break;
+      v = nb[rng() % nb.size()];
+      path.push_back(SPoint::vertex(v));
+    }
+    const auto& a = S.mesh.point(path.front().v); const auto& b = S.mesh.point(path.back().v);
+    const double expected = dist(Cplx(a.x(), a.y()), Cplx(b.x(), b.y()));
+    auto r = SSW::shortest_homotopic_path(s, path);
+    CGAL_HC_CHECK_MSG(std::abs(r.length - expected) < 1e-9, r.length << " vs " << expected);
+    CGAL_HC_CHECK(std::abs(s.path_length(r.path) - r.length) < 1e-9);
+    CGAL_HC_CHECK(r.length <= s.path_length(path) + 1e-12);
+    CGAL_HC_CHECK(s.same_point(r.path.front(), path.front()) && s.same_point(r.path.back(), path.back()));
+    ++tested;
+  }
+  CGAL_HC_CHECK(tested == 30);
+}
+
+CGAL_HC_TEST_CASE(shortest_loops_match_the_holonomy)
+{
+  for(int g : {2, 3}) {
+    RPS S(g, 4);
+    Surface s(S.mesh, S.length);
+    std::mt19937 rng(11 + g);
+    for(int trial = 0; trial < 12; ++trial) {
+      const SSW::Word w = random_word(g, 1 + trial % 4, rng);
+      const Path loop = vertex_path(s, realize(S, w));
+      const Isometry r = rho_word(S, w);
+      // through the base point: the distance from V_0 to rho(w) V_0
+      auto based = SSW::shortest_loop_through_base(s, loop);
+      const double d0 = dist(S.polygon[0], apply_iso(r, S.polygon[0]));
+      CGAL_HC_CHECK_MSG(std::abs(based.length - d0) < 1e-7, SSW::to_string(w) << ": " << based.length << " vs " << d0);
+      // free: the translation length 2 acosh(|tr|/2) of the deck transformation
+      auto free_loop = SSW::shortest_homotopic_loop(s, loop);
+      const double tl = 2 * std::acosh(r.half_trace());
+      CGAL_HC_CHECK_MSG(std::abs(free_loop.length - tl) < 1e-6, SSW::to_string(w) << ": " << free_loop.length << " vs " << tl
+                        << " after " << free_loop.iterations << " iterations");
+      CGAL_HC_CHECK(free_loop.converged);
+    }
+  }
+}
+
+CGAL_HC_TEST_CASE(relator_is_contractible_with_the_cgal_oracle)
+{
+  for(int g : {2, 3}) {
+    RPS S(g, 3);
+    Surface s(S.mesh, S.length);
+    Solver solver(s, S.base, S.generators);
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+    CGAL_HC_CHECK(cst.is_contractible(pos(S.mesh, solver.realize(solver.relator()))));
+    CGAL_HC_CHECK(!cst.is_contractible(pos(S.mesh, solver.realize(SSW::Word{1}))));
+    // swapping a1 and b1 is not canonical in this convention
+    std::vector<std::vector<Mesh::Halfedge_index> > gens = S.generators;
+    std::swap(gens[0], gens[1]);
+    CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), SSW::Invalid_generators_error);
+    gens = S.generators; gens.pop_back();
+    CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), SSW::Invalid_generators_error);
+    gens = S.generators; gens[1] = gens[0];
+    CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), SSW::Invalid_generators_error);
+    gens = S.generators; gens[0].pop_back();
+    CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), SSW::Invalid_generators_error);
+  }
+}
+
+CGAL_HC_TEST_CASE(words_are_base_point_homotopic_cgal_oracle)
+{
+  for(int g : {2, 3}) {
+    RPS S(g, 4);
+    Surface s(S.mesh, S.length);
+    Solver solver(s, S.base, S.generators);
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+    std::mt19937 rng(100 + g);
+    int geometric = 0, total = 0;
+    for(std::size_t len : {10, 30, 100, 300, 1000, 3000, 10000}) {
+      for(int trial = 0; trial < 3; ++trial) {
+        const auto hs = random_loop(S.mesh, S.base, len, rng);
+        const auto res = solver.solve(vertex_path(s, hs));
+        geometric += res.used_geometry; ++total;
+        // (CGAL's oracle compares paths with the same end points: the empty word is checked by contractibility)
+        const bool ok = res.word.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                         : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res.word)));
+        CGAL_HC_CHECK_MSG(ok, "g " << g << " length " << len << " word " << SSW::to_string(res.word));
+        // the raw crossing word is correct too, and the word represents the same element under rho
+        CGAL_HC_CHECK(SSW::internal::free_reduce(res.word) == res.word);
+        if(res.crossing_word.size() <= 30) {
+          const Isometry a = rho_word(S, res.word), b = rho_word(S, res.crossing_word);
+          const double scale = 1 + std::abs(b.normalized().alpha_real()) + std::abs(b.normalized().alpha_imag());
+          CGAL_HC_CHECK(a.distance_to(b) < 1e-10 * scale * scale);
+        }
+      }
+    }
+    CGAL_HC_CHECK(geometric > 0);
+    std::cout << "  genus " << g << ": " << geometric << " of " << total << " loops shortened geometrically" << std::endl;
+  }
+}
+
+CGAL_HC_TEST_CASE(words_are_shortest_cayley_bfs)
+{
+  for(int g : {2, 3}) {
+    RPS S(g, 3);
+    Surface s(S.mesh, S.length);
+    Solver solver(s, S.base, S.generators);
+    Cayley_ball ball(S, 4);
+    std::mt19937 rng(5 + g);
+    int compared = 0, mismatched = 0;
+    for(int trial = 0; trial < (g == 2 ? 150 : 60); ++trial) {
+      const SSW::Word w = random_word(g, 1 + int(rng() % 10), rng);
+      const SSW::Word res = solver.word(vertex_path(s, realize(S, w)));
+      const Isometry target = rho_word(S, w);
+      CGAL_HC_CHECK_MSG(rho_word(S, res).distance_to(target) < 1e-6 * (1 + std::abs(target.normalized().alpha_real())),
+                        SSW::to_string(w) << " -> " << SSW::to_string(res));
+      const int best = ball.word_length(target);
+      if(best >= 0) {
+        ++compared;
+        if(int(res.size()) != best) ++mismatched;
+        CGAL_HC_CHECK_MSG(int(res.size()) == best, "genus " << g << ": " << SSW::to_string(w) << " -> "
+                          << SSW::to_string(res) << " but the shortest word has length " << best);
+      }
+      CGAL_HC_CHECK(SSW::internal::free_reduce(res) == res);
+      CGAL_HC_CHECK(SSW::internal::dehn_reduce(res, solver.relator()).size() == res.size());
+    }
+    std::cout << "  genus " << g << ": " << compared << " words compared with BFS, " << mismatched << " longer" << std::endl;
+    CGAL_HC_CHECK(compared > 20);
+  }
+}
+
+CGAL_HC_TEST_CASE(near_degenerate_loops)
+{
+  RPS S(2, 3);
+  Surface s(S.mesh, S.length);
+  Solver solver(s, S.base, S.generators);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+  // along a generator: the shortest loop is the generator itself (it runs along edges)
+  for(int i = 0; i < 4; ++i) {
+    const SSW::Word w{i + 1};
+    CGAL_HC_CHECK_MSG(solver.word(vertex_path(s, S.generators[std::size_t(i)])) == w, i);
+    const SSW::Word wi{-(i + 1)};
+    CGAL_HC_CHECK(solver.word(vertex_path(s, realize(S, wi))) == wi);
+    CGAL_HC_CHECK(std::abs(solver.shortened_generator_length(std::size_t(i)) - S.side_length()) < 1e-9);
+  }
+  // through the base point in the middle: products of generators, the relator, powers
+  const std::vector<SSW::Word> words = {{1, 1}, {1, 2}, {1, 3}, {1, -2, -1}, {1, 2, -1, -2}, {1, 2, -1, -2, 3, 4, -3}, {4, 4, 4}, {}};
+  for(const SSW::Word& w : words) {
+    const auto hs = realize(S, w);
+    if(hs.empty()) continue;
+    const SSW::Word res = solver.word(vertex_path(s, hs));
+    CGAL_HC_CHECK_MSG(res.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                  : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res))), SSW::to_string(w));
+    CGAL_HC_CHECK_MSG(res.size() <= w.size(), SSW::to_string(w) << " -> " << SSW::to_string(res));
+  }
+  // the relator gives the empty word
+  CGAL_HC_CHECK(solver.word(vertex_path(s, realize(S, solver.relator()))).empty());
+}
+
+CGAL_HC_TEST_CASE(bad_paths_throw)
+{
+  RPS S(2, 3);
+  Surface s(S.mesh, S.length);
+  Solver solver(s, S.base, S.generators);
+  // open path where a loop is needed
+  Path open = vertex_path(s, S.generators[0]);
+  open.pop_back();
+  CGAL_HC_CHECK_THROWS(SSW::shortest_loop_through_base(s, open), SSW::Invalid_path_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, open), SSW::Invalid_path_error);
+  CGAL_HC_CHECK_THROWS(solver.word(open), SSW::Invalid_path_error);
+  // not a path on the mesh: two vertices that share no face
+  Path jump{SPoint::vertex(S.base), SPoint::vertex(*std::next(vertices(S.mesh).begin(), 5))};
+  Path far_away;
+  for(auto v : vertices(S.mesh)) {
+    bool adjacent = v == S.base;
+    for(auto h : CGAL::halfedges_around_source(S.base, S.mesh)) if(S.mesh.target(h) == v) adjacent = true;
+    if(!adjacent) { far_away = {SPoint::vertex(S.base), SPoint::vertex(v), SPoint::vertex(S.base)}; break; }
+  }
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, far_away), SSW::Invalid_path_error);
+  CGAL_HC_CHECK_THROWS(solver.word(far_away), SSW::Invalid_path_error);
+  // edge point with a bad parameter
+  Path bad_t{SPoint::vertex(S.base), SPoint::on_edge(S.generators[0][0], 1.5)};
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, bad_t), SSW::Invalid_path_error);
+  // a loop not through the base vertex
+  const auto v1 = S.mesh.target(S.generators[0][0]);
+  Path other;
+  for(auto h : CGAL::halfedges_around_source(v1, S.mesh)) {
+    other = {SPoint::vertex(v1), SPoint::vertex(S.mesh.target(h)), SPoint::vertex(v1)};
+    break;
+  }
+  CGAL_HC_CHECK_THROWS(solver.word(other), SSW::Invalid_path_error);
+  // too long for double precision: a clear exception
+  SSW::Word longw;
+  for(int i = 0; i < 12; ++i) { longw.push_back(1); longw.push_back(3); }
+  CGAL_HC_CHECK_THROWS(SSW::shortest_loop_through_base(s, vertex_path(s, realize(S, longw))), SSW::Precision_error);
+  (void)jump;
+}
+
+int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }
