@@ -1,0 +1,138 @@
+// Demo of Surface_shortest_words on a bundled genus-2 surface (the regular hyperbolic octagon with its
+// sides glued by a1 b1 a1^-1 b1^-1 a2 b2 a2^-1 b2^-1, triangulated geodesically):
+//  - the canonical system of loops (the octagon's sides) is checked and shortened (Algorithm 2),
+//  - a random loop through the base point is shortened (Algorithm 2) and its word computed (Algorithm 4),
+//  - its free shortest loop (Algorithm 3) is computed,
+//  - the picture surface_shortest_words_demo.svg shows the lift of the shortest loop in the Poincare disk,
+//    the tiling by lifts of the fundamental octagon and the generators.
+// Usage: surface_shortest_words_demo [loop_steps] [seed]
+#include <CGAL/Surface_shortest_words.h>
+#include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
+#include <CGAL/IO/Poincare_disk_svg.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <queue>
+#include <random>
+#include <set>
+
+namespace SSW = CGAL::Surface_shortest_words;
+typedef SSW::Regular_polygon_surface RPS;
+typedef RPS::Mesh Mesh;
+typedef Mesh::Property_map<RPS::Edge_index, double> Length_map;
+typedef SSW::Hyperbolic_surface<Mesh, Length_map> Surface;
+typedef SSW::Shortest_word_solver<Mesh, Length_map> Solver;
+typedef RPS::Isometry Isometry;
+typedef RPS::Cplx Cplx;
+
+int main(int argc, char** argv)
+{
+  const std::size_t steps = argc > 1 ? std::size_t(std::atol(argv[1])) : 150;
+  const unsigned seed = argc > 2 ? unsigned(std::atol(argv[2])) : 3;
+  try {
+    RPS S(2, 6);
+    Surface surface(S.mesh, S.length);
+    std::cout << "surface: genus " << surface.genus() << ", " << num_faces(S.mesh) << " faces, max |angle sum - 2pi| = "
+              << surface.max_angle_defect() << "\n";
+    Solver solver(surface, S.base, S.generators);
+    std::cout << "canonical system: relator " << SSW::to_string(solver.relator()) << "\n";
+    for(int i = 0; i < 4; ++i)
+      std::cout << "  generator " << SSW::to_string(SSW::Word{i + 1}) << ": " << S.generators[std::size_t(i)].size()
+                << " edges, shortest loop through p has length " << solver.shortened_generator_length(std::size_t(i)) << "\n";
+
+    // a random loop through p: a random walk, closed by a shortest edge path back to p
+    std::mt19937 rng(seed);
+    std::vector<Mesh::Halfedge_index> hs;
+    Mesh::Vertex_index v = S.base;
+    for(std::size_t i = 0; i < steps; ++i) {
+      std::vector<Mesh::Halfedge_index> out;
+      for(auto h : CGAL::halfedges_around_source(v, S.mesh)) out.push_back(h);
+      hs.push_back(out[rng() % out.size()]);
+      v = S.mesh.target(hs.back());
+    }
+    std::map<Mesh::Vertex_index, Mesh::Halfedge_index> parent;
+    std::queue<Mesh::Vertex_index> q; q.push(S.base); parent[S.base] = Mesh::null_halfedge();
+    while(!q.empty()) {
+      auto u = q.front(); q.pop();
+      for(auto h : CGAL::halfedges_around_source(u, S.mesh))
+        if(!parent.count(S.mesh.target(h))) { parent[S.mesh.target(h)] = h; q.push(S.mesh.target(h)); }
+    }
+    std::vector<Mesh::Halfedge_index> back;
+    while(v != S.base) { auto h = parent[v]; back.push_back(S.mesh.opposite(h)); v = S.mesh.source(h); }
+    hs.insert(hs.end(), back.begin(), back.end());
+    const Surface::Path loop = surface.path_from_halfedges(hs);
+
+    const auto res = solver.solve(loop);
+    std::cout << "random loop: " << hs.size() << " edges, length " << surface.path_length(loop) << "\n";
+    std::cout << "shortest loop through p: length " << res.length << ", " << res.loop.size() << " points"
+              << (res.used_geometry ? "" : " (too long for the geometric step: crossings of the input loop)") << "\n";
+    std::cout << "word read from the crossings: " << SSW::to_string(res.crossing_word) << "\n";
+    std::cout << "shortest word: " << SSW::to_string(res.word) << "  (length " << res.word.size() << ")\n";
+    std::cout << "CGAL labels:";
+    for(const std::string& l : SSW::to_labels(res.word)) std::cout << " " << l;
+    std::cout << "\n";
+    if(!res.word.empty()) {
+      const auto free_loop = SSW::shortest_homotopic_loop(surface, loop);
+      std::cout << "shortest freely homotopic loop: length " << free_loop.length << " after " << free_loop.iterations
+                << " re-basing iterations (" << (free_loop.converged ? "converged" : "not converged") << ")\n";
+    }
+
+    // picture, centred at the midpoint of the lifted shortest loop: tiles rho(x) P near the loop, the word's
+    // path along generator lifts (coloured by generator), the lifted shortest loop (black)
+    using SSW::internal::apply_isometry;
+    std::vector<Isometry> prefixes{Isometry()};
+    for(int l : res.word) {
+      const Isometry& g = S.rho_generator(std::abs(l) - 1);
+      prefixes.push_back((prefixes.back() * (l > 0 ? g : g.inverse())).normalized());
+    }
+    const Cplx start = S.polygon[0], end = apply_isometry(prefixes.back(), start);
+    const Cplx mid = SSW::internal::point_along(start, end, 0.5 * SSW::internal::hyperbolic_distance(start, end));
+    const Isometry view = SSW::internal::to_origin(mid);
+    auto V = [&](const Cplx& z) { return apply_isometry(view, z); };
+    CGAL::Poincare_disk_svg_writer svg(900);
+    svg.add_unit_circle();
+    std::vector<Isometry> tiles;
+    std::set<std::pair<long long, long long> > seen;
+    auto add_tile = [&](const Isometry& t) {
+      const Cplx c = V(apply_isometry(t, Cplx(0, 0)));
+      if(seen.insert(std::make_pair(std::llround(c.real() * 1e5), std::llround(c.imag() * 1e5))).second) tiles.push_back(t);
+    };
+    for(const Isometry& pre : prefixes) {
+      std::vector<Isometry> ball{pre};
+      for(int r = 0; r < 2; ++r) {
+        const std::size_t n = ball.size();
+        for(std::size_t i = 0; i < n; ++i)
+          for(int l = -4; l <= 4; ++l)
+            if(l != 0) {
+              const Isometry& g = S.rho_generator(std::abs(l) - 1);
+              ball.push_back((ball[i] * (l > 0 ? g : g.inverse())).normalized());
+            }
+      }
+      for(const Isometry& t : ball) add_tile(t);
+    }
+    for(const Isometry& t : tiles) {
+      std::vector<double> xy;
+      for(const Cplx& z : S.polygon) { const Cplx w = V(apply_isometry(t, z)); xy.push_back(w.real()); xy.push_back(w.imag()); }
+      svg.add_geodesic_polygon(xy, "none", "#bbbbbb", 0.6);
+    }
+    const char* colours[4] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd"};
+    for(std::size_t i = 0; i < res.word.size(); ++i) {
+      const Cplx a = V(apply_isometry(prefixes[i], start)), b = V(apply_isometry(prefixes[i + 1], start));
+      svg.add_geodesic_segment(a.real(), a.imag(), b.real(), b.imag(), colours[std::abs(res.word[i]) - 1], 3.0);
+    }
+    const Cplx vs = V(start), ve = V(end);
+    svg.add_geodesic_segment(vs.real(), vs.imag(), ve.real(), ve.imag(), "#000000", 2.0);
+    svg.add_point(vs.real(), vs.imag(), "#000", 4);
+    svg.add_point(ve.real(), ve.imag(), "#000", 4);
+    svg.add_text(20, 30, "shortest word: " + SSW::to_string(res.word), 18);
+    svg.add_text(20, 55, "black: lift of the shortest loop through p; colours: the word along lifts of", 14);
+    svg.add_text(20, 75, "a1 (red), b1 (blue), a2 (green), b2 (purple); grey: lifts of the fundamental octagon", 14);
+    svg.write("surface_shortest_words_demo.svg");
+    std::cout << "wrote surface_shortest_words_demo.svg\n";
+  } catch(const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
