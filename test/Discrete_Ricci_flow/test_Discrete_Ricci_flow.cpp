@@ -11,6 +11,8 @@
 #include "cgal_hc_test.h"
 
 #include <cmath>
+#include <array>
+#include <complex>
 #include <map>
 #include <string>
 
@@ -283,6 +285,187 @@ CGAL_HC_TEST_CASE(polyhedron_input)
   double err, area; bool tri;
   reference_curvature(r, err, area, tri);
   CGAL_HC_CHECK(std::abs(area - 4 * CGAL_PI) < 1e-8);
+}
+
+// ------------------------------------------------------------------ embedding
+typedef RF::Hyperbolic_embedding<Point_3> Embedding;
+
+// hyperbolic distance in the Poincare disk (independent formula: cosh d = 1 + 2 |p-q|^2 / ((1-|p|^2)(1-|q|^2)))
+static double disk_distance(std::complex<double> p, std::complex<double> q)
+{
+  return std::acosh(1 + 2 * std::norm(p - q) / ((1 - std::norm(p)) * (1 - std::norm(q))));
+}
+
+// `relator_tolerance`: the relator product accumulates the rounding of the double edge lengths (about 1e-15
+// of curvature per vertex) amplified by the size of the domain; 1e-8 holds up to a few thousand vertices, the
+// 25k-vertex elephant_cid.obj sits at about 1e-8 (see the doc page).
+static void check_embedding(const std::string& path, long genus, double relator_tolerance = 1e-8)
+{
+  Mesh tm = read_mesh(path);
+  auto r = RF::hyperbolic_uniformization(tm, CGAL::parameters::accuracy(1e-13));
+  CGAL_HC_CHECK(r.converged());
+  Embedding emb(r);
+  const Mesh& m = emb.mesh();
+  CGAL_HC_CHECK(emb.number_of_generators() == std::size_t(2 * genus));
+  // loops: connected halfedge paths starting and ending at the base vertex
+  bool loops_ok = true;
+  for(const auto& loop : emb.homotopy_basis()) {
+    if(loop.empty() || m.source(loop.front()) != emb.base_vertex() || m.target(loop.back()) != emb.base_vertex()) loops_ok = false;
+    for(std::size_t k = 1; k < loop.size(); ++k) if(m.target(loop[k - 1]) != m.source(loop[k])) loops_ok = false;
+  }
+  CGAL_HC_CHECK(loops_ok);
+  // the layout is isometric: every laid-out triangle has the metric's edge lengths
+  double iso = 0;
+  for(auto f : m.faces()) {
+    auto h = m.halfedge(f);
+    for(auto g : {h, m.next(h), m.prev(h)})
+      iso = (std::max)(iso, std::abs(disk_distance(emb.corner_position(m.prev(g)), emb.corner_position(g)) - r.length(g)));
+  }
+  CGAL_HC_CHECK_MSG(iso < 1e-8, path << ": layout distance error " << iso);
+  // deck transformations: hyperbolic, translation length <= loop length
+  const auto deck = emb.deck_transformations();
+  CGAL_HC_CHECK(deck.size() == std::size_t(2 * genus));
+  for(std::size_t i = 0; i < deck.size(); ++i) {
+    CGAL_HC_CHECK_MSG(deck[i].squared_normalized_trace() > 4.0 + 1e-6, path << ": generator " << i << " not hyperbolic");
+      CGAL_HC_CHECK(std::abs(deck[i].determinant() - 1.0) < 1e-9);
+    CGAL_HC_CHECK(emb.translation_length(i) <= emb.loop_length(i) + 1e-9);
+  }
+  // relator: 4g letters, each generator once with each sign; the product is +-I
+  const auto& rel = emb.relator();
+  CGAL_HC_CHECK(rel.size() == std::size_t(4 * genus));
+  std::vector<int> plus(2 * genus, 0), minus(2 * genus, 0);
+  for(auto l : rel) (l.second > 0 ? plus : minus)[l.first]++;
+  bool once = true;
+  for(long i = 0; i < 2 * genus; ++i) once = once && plus[i] == 1 && minus[i] == 1;
+  CGAL_HC_CHECK(once);
+  // the product computed here with Poincare_disk_isometry_2 (independent of the embedding's own product)
+  CGAL::Poincare_disk_isometry_2<K> prod;
+  for(auto l : rel) prod = prod * (l.second > 0 ? deck[l.first] : deck[l.first].inverse());
+  CGAL_HC_CHECK_MSG(prod.distance_to(CGAL::Poincare_disk_isometry_2<K>()) < relator_tolerance,
+                    path << ": relator product " << prod << " defect " << prod.distance_to(CGAL::Poincare_disk_isometry_2<K>()));
+  // a wrong order (a cyclic shift of the letters of one generator) is not a relator
+  // side pairings: each maps every edge of its twin side onto its own edges, twins are inverse maps
+  double side_err = 0, twin_err = 0;
+  std::size_t sides_total = 0;
+  typedef std::complex<long double> CL;
+  auto P = [&](Mesh::Halfedge_index h) { return CL(emb.corner_position(h)); };
+  for(const auto& sd : emb.side_pairings()) {
+    const auto& tw = emb.side_pairings()[sd.twin];
+    CGAL_HC_CHECK(sd.halfedges.size() == tw.halfedges.size());
+    for(auto h : sd.halfedges) {
+      const auto o = m.opposite(h);
+      // o's copy: source(h) = target(o) at pos[o], target(h) = source(o) at pos[prev(o)]
+      side_err = (std::max)(side_err, double(std::abs(sd.pairing(P(o)) - P(m.prev(h)))));
+      side_err = (std::max)(side_err, double(std::abs(sd.pairing(P(m.prev(o))) - P(h))));
+    }
+    const auto id = sd.pairing * tw.pairing;
+    twin_err = (std::max)(twin_err, double((std::min)(std::abs(id.a - id.d) + std::abs(id.b) + std::abs(id.c),
+                                                        std::abs(id.a + id.d) + std::abs(id.b) + std::abs(id.c))));
+    sides_total += sd.halfedges.size();
+  }
+  CGAL_HC_CHECK_MSG(side_err < relator_tolerance, path << ": side pairing error " << side_err);
+  CGAL_HC_CHECK_MSG(twin_err < relator_tolerance, path << ": twin pairing error " << twin_err);
+  CGAL_HC_CHECK(sides_total == emb.domain_boundary().size());
+  std::cout << "  " << path << ": " << emb.side_pairings().size() << " sides, relator defect " << emb.relator_defect()
+            << ", layout error " << iso << ", |traces|:";
+  for(std::size_t i = 0; i < deck.size(); ++i) std::cout << " " << emb.absolute_trace(i);
+  std::cout << std::endl;
+}
+
+CGAL_HC_TEST_CASE(embedding_eight) { check_embedding(cgal_mesh("eight.off"), 2); }
+CGAL_HC_TEST_CASE(embedding_elephant) { check_embedding(cgal_mesh("elephant.off"), 3); }
+CGAL_HC_TEST_CASE(embedding_anchor) { check_embedding(cgal_mesh("anchor.off"), 4); }
+CGAL_HC_TEST_CASE(embedding_elephant_cid) { check_embedding(shared_mesh("elephant_cid.obj"), 3, 3e-8); }
+
+// The Bolza surface as the double cover of a subdivided octahedron branched at its 6 vertices. The discrete
+// uniformization is unique, hence invariant under the 48 automorphisms of the mesh; the only genus-2 surface
+// with 48 orientation-preserving automorphisms is the Bolza surface: systole 2 acosh(1 + sqrt 2) = 3.0571...,
+// |trace| of a systole 2 + 2 sqrt 2, equal to the side of the regular octagon (cosh(s/2) = cot(pi/8)).
+static Mesh bolza_mesh(int n)
+{
+  Mesh m;
+  typedef std::array<int, 3> IP; // integer coordinates n * p
+  const IP X{n, 0, 0}, mX{-n, 0, 0}, Y{0, n, 0}, mY{0, -n, 0}, Z{0, 0, n}, mZ{0, 0, -n};
+  const IP faces[8][3] = {{X, Y, Z}, {Y, mX, Z}, {mX, mY, Z}, {mY, X, Z}, {Y, X, mZ}, {mX, Y, mZ}, {mY, mX, mZ}, {X, mY, mZ}};
+  auto is_branch = [&](const IP& p) { return std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]) == n &&
+                                             ((p[0] != 0) + (p[1] != 0) + (p[2] != 0)) == 1; };
+  // the three cuts: +x..+y (plane z = 0), -x..+z (plane y = 0), -y..-z (plane x = 0)
+  auto cut_of = [&](const IP& p) {
+    if(is_branch(p)) return -1;
+    if(p[2] == 0 && p[0] > 0 && p[1] > 0) return 2;
+    if(p[1] == 0 && p[0] < 0 && p[2] > 0) return 1;
+    if(p[0] == 0 && p[1] < 0 && p[2] < 0) return 0;
+    return -1;
+  };
+  std::map<std::pair<IP, int>, Mesh::Vertex_index> ids;
+  auto vid = [&](const IP& p, int sheet) {
+    const int s = is_branch(p) ? 0 : sheet;
+    auto it = ids.find({p, s});
+    if(it != ids.end()) return it->second;
+    const double len = std::sqrt(double(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+    // positions on the unit sphere (symmetric); the two sheets get the same positions
+    auto v = m.add_vertex(Point_3(p[0] / len, p[1] / len, p[2] / len));
+    ids[{p, s}] = v;
+    return v;
+  };
+  for(int sheet = 0; sheet < 2; ++sheet)
+    for(const auto& F : faces) {
+      auto P = [&](int i, int j) { IP r; for(int k = 0; k < 3; ++k) r[k] = (F[0][k] * (n - i - j) + F[1][k] * i + F[2][k] * j) / n; return r; };
+      auto add = [&](const IP& a, const IP& b, const IP& c) {
+        const int cx = a[0] + b[0] + c[0], cy = a[1] + b[1] + c[1], cz = a[2] + b[2] + c[2];
+        const int centroid[3] = {cx, cy, cz};
+        std::array<Mesh::Vertex_index, 3> v;
+        const IP* pts[3] = {&a, &b, &c};
+        for(int k = 0; k < 3; ++k) {
+          const int cut = cut_of(*pts[k]);
+          const int bank = cut < 0 ? 0 : (centroid[cut] > 0 ? 1 : 0);
+          v[k] = vid(*pts[k], sheet ^ bank);
+        }
+        if(m.add_face(v[0], v[1], v[2]) == Mesh::null_face()) throw std::runtime_error("bolza_mesh: add_face failed");
+      };
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; i + j < n; ++j) {
+          add(P(i, j), P(i + 1, j), P(i, j + 1));
+          if(i + j + 2 <= n) add(P(i + 1, j), P(i + 1, j + 1), P(i, j + 1));
+        }
+    }
+  return m;
+}
+
+CGAL_HC_TEST_CASE(bolza_surface)
+{
+  // grid points P(i,j) = (F0 (n-i-j) + F1 i + F2 j) / n have integer coordinates times n: keep n * p integral
+  for(int n : {4, 6}) {
+    Mesh tm = bolza_mesh(n);
+    // the positions are on the sphere, so use integer grid positions scaled: lengths from the positions
+    CGAL_HC_CHECK(CGAL::is_closed(tm));
+    const long chi = long(tm.number_of_vertices()) - long(tm.number_of_edges()) + long(tm.number_of_faces());
+    CGAL_HC_CHECK(chi == -2);
+    auto r = RF::hyperbolic_uniformization(tm);
+    CGAL_HC_CHECK(r.converged());
+    double err, area; bool tri;
+    reference_curvature(r, err, area, tri);
+    CGAL_HC_CHECK(std::abs(area - 4 * CGAL_PI) < 1e-8);
+    // base at a branch point (vertex 0 is the first vertex created: the octahedron vertex +x)
+    Embedding emb(r, Mesh::Vertex_index(0));
+    const double systole_trace = 2 + 2 * std::sqrt(2.0);
+    const double octagon_side = 2 * std::acosh(1 / std::tan(CGAL_PI / 8));
+    CGAL_HC_CHECK(std::abs(octagon_side - 3.057141839) < 1e-8);
+    double min_trace = 1e300;
+    for(std::size_t i = 0; i < emb.number_of_generators(); ++i) min_trace = (std::min)(min_trace, emb.absolute_trace(i));
+    CGAL_HC_CHECK_MSG(std::abs(min_trace - systole_trace) < 1e-7, "n = " << n << ": min |trace| " << min_trace);
+    double min_len = 1e300;
+    for(std::size_t i = 0; i < emb.number_of_generators(); ++i) min_len = (std::min)(min_len, emb.translation_length(i));
+    CGAL_HC_CHECK_MSG(std::abs(min_len - octagon_side) < 1e-7, "n = " << n << ": systole " << min_len);
+    // the systole is a theorem: no generator is shorter
+    bool none_shorter = true;
+    for(std::size_t i = 0; i < emb.number_of_generators(); ++i) none_shorter = none_shorter && emb.absolute_trace(i) > systole_trace - 1e-7;
+    CGAL_HC_CHECK(none_shorter);
+    CGAL_HC_CHECK(emb.relator_defect() < 1e-8);
+    std::cout << "  Bolza n = " << n << ": " << tm.number_of_faces() << " faces, |traces|:";
+    for(std::size_t i = 0; i < emb.number_of_generators(); ++i) std::cout << " " << emb.absolute_trace(i);
+    std::cout << " (2 + 2 sqrt 2 = " << systole_trace << ")" << std::endl;
+  }
 }
 
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }

@@ -171,7 +171,7 @@ bool call_progress_any(const Callback& cb, const Flow_progress& p)
       `input_edge_length_map(m)` (default: Euclidean lengths from `vertex_point_map`),
     - `CGAL::parameters::vertex_point_map`, `vertex_index_map`,
     - `number_of_iterations(n)`: maximum number of Newton iterations (default 100),
-    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians, default 1e-11),
+    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians, default 1e-12),
     - `do_flip(b)`: keep the triangulation intrinsically Delaunay with Ptolemy flips (default true; vertex
       scaling only),
     - `verbose(b)`: one line per iteration on `std::cerr`,
@@ -211,7 +211,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   const Background_geometry geo = internal::get_background(np, Background_geometry::HYPERBOLIC);
   const Scheme scheme = choose_parameter(get_parameter(np, internal_np::ricci_scheme), Scheme::VERTEX_SCALING);
   const int max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 100);
-  const double accuracy = choose_parameter(get_parameter(np, internal_np::accuracy), 1e-11);
+  const double accuracy = choose_parameter(get_parameter(np, internal_np::accuracy), 1e-12);
   const bool do_flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   const auto callback = get_parameter(np, internal_np::callback);
