@@ -1,0 +1,118 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Internal: exact quality predicates and approximate quality measures of Poincare-disk triangles.
+#ifndef CGAL_HYPERBOLIC_MESH_2_INTERNAL_EXACT_QUALITY_H
+#define CGAL_HYPERBOLIC_MESH_2_INTERNAL_EXACT_QUALITY_H
+
+#include <CGAL/Poincare_disk_traits_2.h>
+#include <CGAL/Poincare_disk_traits_2/internal/filtered_evaluation.h>
+#include <CGAL/Poincare_disk_traits_2/internal/polynomials.h>
+#include <CGAL/Uncertain.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Hyperbolic_mesh_2 {
+namespace internal {
+
+// Chew's test "some edge is shorter than the circumradius r" as a polynomial sign (POSITIVE: yes, or the
+// circumcircle is not compact). cosh^2 r = (A - G)^2 / Delta (Circle_coefficients) and
+// cosh d(a, b) = (n_a n_b + 2 |a - b|^2) / (n_a n_b), n = 1 - |z|^2. Edge ab shorter than r iff
+// (n_a n_b + 2 |a-b|^2)^2 Delta < (A - G)^2 (n_a n_b)^2.
+struct Edge_shorter_than_circumradius_poly
+{
+  template <class NT>
+  auto operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
+      -> decltype(CGAL::sign(px))
+  {
+    using namespace Poincare_disk_internal;
+    typedef decltype(CGAL::sign(px)) S;
+    const Circle_coefficients<NT> cc(px, py, qx, qy, rx, ry);
+    const NT delta = cc.delta();
+    if(CGAL::make_certain(CGAL::sign(delta)) != POSITIVE) return S(POSITIVE);
+    const NT c2 = cc.cosh2_numerator();
+    const NT np = lift_n(px, py), nq = lift_n(qx, qy), nr = lift_n(rx, ry);
+    auto shorter = [&](const NT& na, const NT& nb, const NT& d2) {
+      const NT nn = na * nb, c = nn + NT(2) * d2;
+      return CGAL::make_certain(CGAL::sign(c2 * nn * nn - c * c * delta));
+    };
+    const Sign s1 = shorter(np, nq, squared_euclidean(px, py, qx, qy));
+    if(s1 == POSITIVE) return S(POSITIVE);
+    const Sign s2 = shorter(nq, nr, squared_euclidean(qx, qy, rx, ry));
+    if(s2 == POSITIVE) return S(POSITIVE);
+    const Sign s3 = shorter(nr, np, squared_euclidean(rx, ry, px, py));
+    if(s3 == POSITIVE) return S(POSITIVE);
+    return S((s1 == ZERO || s2 == ZERO || s3 == ZERO) ? ZERO : NEGATIVE);
+  }
+};
+
+/// Exact (filtered): some edge of pqr is strictly shorter than its hyperbolic circumradius (or the circumcircle
+/// is not compact).
+template <class Point_2>
+bool has_edge_shorter_than_circumradius(const Point_2& p, const Point_2& q, const Point_2& r)
+{
+  typedef typename Kernel_traits<Point_2>::Kernel::FT FT;
+  return Poincare_disk_internal::Exact_evaluator<FT>::eval(Edge_shorter_than_circumradius_poly(), p.x(), p.y(),
+                                                          q.x(), q.y(), r.x(), r.y()) == POSITIVE;
+}
+
+/// Approximate cosh^2 of the hyperbolic circumradius (+infinity if the circumcircle is not compact), in double.
+/// Used only to order the work queue.
+template <class Point_2>
+double approximate_cosh2_circumradius(const Point_2& p, const Point_2& q, const Point_2& r)
+{
+  const Poincare_disk_internal::Circle_coefficients<double> cc(
+      CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(q.x()), CGAL::to_double(q.y()),
+      CGAL::to_double(r.x()), CGAL::to_double(r.y()));
+  const double delta = cc.delta();
+  if(!(delta > 0)) return std::numeric_limits<double>::infinity();
+  return cc.cosh2_numerator() / delta;
+}
+
+/// Approximate hyperbolic circumradius (+infinity if not compact).
+template <class Point_2>
+double approximate_circumradius(const Point_2& p, const Point_2& q, const Point_2& r)
+{
+  const double c2 = approximate_cosh2_circumradius(p, q, r);
+  if(!std::isfinite(c2)) return c2;
+  return std::acosh(std::sqrt(std::max(1.0, c2)));
+}
+
+/// A(p, q) = sinh^2(d(p, q) / 2) in double.
+template <class Point_2>
+double approximate_sinh2_half_distance(const Point_2& p, const Point_2& q)
+{
+  const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y()), qx = CGAL::to_double(q.x()),
+               qy = CGAL::to_double(q.y());
+  const double dx = px - qx, dy = py - qy;
+  return (dx * dx + dy * dy) / ((1 - px * px - py * py) * (1 - qx * qx - qy * qy));
+}
+
+/// Approximate hyperbolic distance.
+template <class Point_2>
+double approximate_distance(const Point_2& p, const Point_2& q)
+{
+  return 2.0 * std::asinh(std::sqrt(approximate_sinh2_half_distance(p, q)));
+}
+
+/// Approximate central angle of the shortest edge of pqr (0 if the circumcircle is not compact), radians:
+/// sin^2(alpha/2) = A_min / sinh^2 h.
+template <class Point_2>
+double approximate_central_angle(const Point_2& p, const Point_2& q, const Point_2& r)
+{
+  const double c2 = approximate_cosh2_circumradius(p, q, r);
+  if(!std::isfinite(c2) || c2 <= 1) return 0.0;
+  const double a = std::min({approximate_sinh2_half_distance(p, q), approximate_sinh2_half_distance(q, r),
+                             approximate_sinh2_half_distance(r, p)});
+  const double s2 = std::min(1.0, a / (c2 - 1.0));
+  return 2.0 * std::asin(std::sqrt(s2));
+}
+
+} // namespace internal
+} // namespace Hyperbolic_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_MESH_2_INTERNAL_EXACT_QUALITY_H

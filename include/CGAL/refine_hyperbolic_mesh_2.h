@@ -1,0 +1,98 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Delaunay refinement of planar geodesic graphs in the Poincare disk (thesis chapter 3):
+//   refine_hyperbolic_Ruppert_mesh_2  generalized Ruppert, Algorithm 6
+//   refine_hyperbolic_Chew_mesh_2     generalized Chew's second algorithm, Algorithm 5
+#ifndef CGAL_REFINE_HYPERBOLIC_MESH_2_H
+#define CGAL_REFINE_HYPERBOLIC_MESH_2_H
+
+#include <CGAL/Hyperbolic_mesh_2/internal/Refiner.h>
+#include <CGAL/Hyperbolic_mesh_2/mesh_types.h>
+#include <CGAL/Hyperbolic_mesh_criteria_2.h>
+
+namespace CGAL {
+
+/*!
+  \ingroup PkgHyperbolicMesh2Ref
+
+  Refines `cdt` with the generalized Ruppert algorithm (thesis Algorithm 6) until every face of the domain meets
+  `criteria` (central angle of the shortest edge >= alpha, hyperbolic circumradius <= epsilon).
+
+  \tparam CDT a `Constrained_Delaunay_triangulation_2<Poincare_disk_traits_2<K>, Tds>` whose face base has the
+  in-domain mark of `Delaunay_mesh_face_base_2` (`is_in_domain()`, `set_in_domain()`). Its constrained edges
+  are the geodesic segments of the input; a triangulation without constrained edges is a point cloud, whose
+  convex hull edges are then constrained.
+
+  Algorithm: the constrained edges encroached by a vertex (exact `Side_of_hyperbolic_diametral_circle_2`) are
+  split at their hyperbolic midpoints first; then the poor faces, largest circumradius first, get their
+  hyperbolic circumcenter (the midpoint of the longest edge when the circumcircle is not compact), unless the
+  circumcenter encroaches a constrained edge of its conflict zone or lies beyond it (thesis Lemma 3.5): then the
+  circumcenter is rejected and those edges are split. Input angles below pi/2 are lopped (thesis Fig. 3.6): every
+  segment at such an apex is split at lfs/3 from it, and poor faces whose shortest edge joins the two segments of
+  a small angle are left as they are (`Mesh_statistics::protected_faces`). Optional off-centers
+  (`parameters.off_centers(true)`).
+
+  The domain is marked as in `refine_Delaunay_mesh_2` (`parameters.seeds(...)`, `.seeds_are_in_domain(...)`)
+  and kept up to date: on return `f->is_in_domain()` is the domain.
+
+  Termination: guaranteed (Theorem 3.2) when 1 - rho(epsilon, alpha) rho(epsilon, pi/2) > 0 and no input angle
+  is below pi/2; reported in `Mesh_statistics::termination_guaranteed`. In every case the work is bounded by
+  `parameters.maximum_number_of_operations()` insertions + removals; the status says whether it was reached.
+
+  Throws `Hyperbolic_mesh_2::Input_error` if `cdt` has dimension < 2 or a vertex or seed is not inside the disk.
+  Cost: O(log n) expected per insertion for the queues plus the CDT insertion (conflict zone size); O(n) to mark
+  the domain; O(k (n + m)) for the k small angles.
+*/
+template <class CDT>
+Hyperbolic_mesh_2::Mesh_statistics
+refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>& criteria,
+                                 const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters =
+                                     Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>())
+{
+  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_mesh_criteria_2<CDT>, false> r(cdt, criteria, parameters);
+  return r.run();
+}
+
+/*!
+  \ingroup PkgHyperbolicMesh2Ref
+
+  Refines `cdt` with the generalized Chew second algorithm (thesis Algorithm 5): a face with circumradius r is
+  poor if the central angle of its shortest edge is below theta*(r) (equivalently: an edge shorter than r) or
+  r > epsilon. Poor faces are processed largest circumradius first. A circumcenter lying beyond a constrained
+  edge (on the other side from the face, thesis Lemma 3.5) is not inserted; the edge is split instead:
+  - into thirds if its length is in [2 rho(h*) h*, 4 h*], then the circumcenters closer than a third of its
+    length to a new vertex are removed;
+  - otherwise at its hyperbolic midpoint, then the circumcenters inside its diametral disk are removed.
+  h* is the minimum of epsilon, half the shortest input segment and the smallest distance between non-incident
+  input features (`Mesh_statistics::h_star`). Termination is guaranteed when h* < 2.3101 (Theorem 3.1) and no
+  input angle is below pi/2; otherwise the run is bounded by `parameters.maximum_number_of_operations()` and the
+  status tells how it ended. Corner lopping and the protected faces work as for the Ruppert entry point.
+
+  Same template parameter, parameters, exceptions and cost as `refine_hyperbolic_Ruppert_mesh_2()`, plus
+  O(n m) for h* (n vertices, m segments; only local segments when n m > 2e7).
+*/
+template <class CDT>
+Hyperbolic_mesh_2::Mesh_statistics
+refine_hyperbolic_Chew_mesh_2(CDT& cdt, const Hyperbolic_Chew_mesh_criteria_2<CDT>& criteria,
+                              const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters =
+                                  Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>())
+{
+  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_Chew_mesh_criteria_2<CDT>, true> r(cdt, criteria, parameters);
+  return r.run();
+}
+
+/*!
+  \ingroup PkgHyperbolicMesh2Ref
+  Marks the domain of `cdt` without refining it (same rules as the refinement entry points).
+*/
+template <class CDT, class SeedIterator>
+void mark_hyperbolic_domain_2(CDT& cdt, SeedIterator seeds_begin, SeedIterator seeds_end, bool seeds_are_in_domain = false)
+{
+  std::vector<typename CDT::Point> seeds(seeds_begin, seeds_end);
+  Hyperbolic_mesh_2::internal::mark_domain(cdt, seeds, seeds_are_in_domain);
+}
+
+} // namespace CGAL
+
+#endif // CGAL_REFINE_HYPERBOLIC_MESH_2_H
