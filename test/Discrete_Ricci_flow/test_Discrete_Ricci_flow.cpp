@@ -468,4 +468,87 @@ CGAL_HC_TEST_CASE(bolza_surface)
   }
 }
 
+// ------------------------------------------------------------------ flat tori
+// an n x m grid torus; vertex (i, j) = i * m + j; positions on a torus of revolution with radii R > r
+static Mesh grid_torus(int n, int m, double R, double r, bool other_diagonal = false)
+{
+  Mesh t;
+  std::vector<Mesh::Vertex_index> v(n * m);
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      const double phi = 2 * CGAL_PI * i / n, theta = 2 * CGAL_PI * j / m;
+      v[i * m + j] = t.add_vertex(Point_3((R + r * std::cos(theta)) * std::cos(phi), (R + r * std::cos(theta)) * std::sin(phi),
+                                          r * std::sin(theta)));
+    }
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      const auto a = v[i * m + j], b = v[((i + 1) % n) * m + j], c = v[((i + 1) % n) * m + (j + 1) % m], d = v[i * m + (j + 1) % m];
+      if(other_diagonal) { t.add_face(a, b, d); t.add_face(b, c, d); }
+      else { t.add_face(a, b, c); t.add_face(a, c, d); }
+    }
+  return t;
+}
+
+// the reduction of tau to the fundamental region of SL(2,Z), written independently of the package
+static std::complex<double> reduce_tau(std::complex<double> t)
+{
+  if(t.imag() < 0) t = -t;
+  for(int k = 0; k < 100; ++k) {
+    t -= std::round(t.real());
+    if(std::abs(t) < 1) t = -1.0 / t; else break;
+  }
+  return t;
+}
+
+CGAL_HC_TEST_CASE(flat_torus_of_revolution)
+{
+  // the torus of revolution (R, r) is conformal to the rectangle 2 pi x 2 pi r / sqrt(R^2 - r^2):
+  // tau = i sqrt(R^2 - r^2) / r after reduction (isothermal coordinates psi = int r / (R + r cos theta))
+  const double R = 3, r = 1;
+  Mesh tm = grid_torus(90, 30, R, r);
+  auto metric = RF::flat_metric(tm);
+  CGAL_HC_CHECK(metric.converged());
+  CGAL_HC_CHECK(metric.statistics().max_curvature_error < 1e-9 * two_pi);
+  double err, area; bool tri;
+  reference_curvature(metric, err, area, tri);
+  CGAL_HC_CHECK_MSG(err < 1e-9 * two_pi, "recomputed flat curvature error " << err);
+  Embedding emb(metric);
+  CGAL_HC_CHECK(emb.number_of_generators() == 2);
+  const std::complex<double> tau = emb.lattice_parameter();
+  const std::complex<double> expected(0, std::sqrt(R * R - r * r) / r);
+  CGAL_HC_CHECK_MSG(std::abs(tau - expected) < 5e-3 * std::abs(expected), "tau = " << tau << ", expected " << expected);
+  CGAL_HC_CHECK(emb.relator_defect() < 1e-9);
+  std::cout << "  torus of revolution R = 3, r = 1: tau = " << tau << " (expected " << expected << ")" << std::endl;
+}
+
+CGAL_HC_TEST_CASE(flat_torus_from_lattice)
+{
+  // an intrinsically flat torus: the lengths of a grid on the lattice Z w1 + Z w2 (given through
+  // input_edge_length_map, the positions are unrelated); tau must be w2 / w1 reduced. The diagonals are chosen
+  // so that all triangles are acute (an intrinsic Delaunay input: the Penner class is the PL metric's class).
+  const int n = 12, m = 9;
+  const std::complex<double> w1(1.0, 0.0), w2(0.3, 0.8);
+  Mesh tm = grid_torus(n, m, 3, 1, true);
+  auto lmap = tm.add_property_map<Mesh::Edge_index, double>("e:input_length", 0.0).first;
+  for(auto e : tm.edges()) {
+    const auto h = tm.halfedge(e);
+    const int a = int(tm.source(h)), b = int(tm.target(h));
+    int di = b / m - a / m, dj = b % m - a % m;
+    if(di > 1) di -= n;
+    if(di < -1) di += n;
+    if(dj > 1) dj -= m;
+    if(dj < -1) dj += m;
+    lmap[e] = std::abs(double(di) / n * w1 + double(dj) / m * w2);
+  }
+  auto metric = RF::flat_metric(tm, RF::parameters::input_edge_length_map(lmap));
+  CGAL_HC_CHECK(metric.converged());
+  CGAL_HC_CHECK(metric.statistics().iterations <= 1);
+  Embedding emb(metric);
+  const std::complex<double> tau = emb.lattice_parameter(), expected = reduce_tau(w2 / w1);
+  CGAL_HC_CHECK_MSG(std::abs(tau - expected) < 1e-10, "tau = " << tau << ", expected " << expected);
+  CGAL_HC_CHECK(std::abs(metric.total_area() - std::abs((std::conj(w1) * w2).imag())) < 1e-10);
+  // the flat metric is bad input for the hyperbolic embedding and vice versa
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(tm), RF::Ricci_flow_error);
+}
+
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }
