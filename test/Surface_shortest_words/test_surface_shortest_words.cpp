@@ -7,6 +7,11 @@
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/Curves_on_surface_topology.h>
 
+#if __has_include(<CGAL/Discrete_Ricci_flow.h>)
+#include <CGAL/Discrete_Ricci_flow.h>
+#define SSW_HAS_RICCI_FLOW 1
+#endif
+
 #include "cgal_hc_test.h"
 
 #include <cmath>
@@ -420,5 +425,98 @@ CGAL_HC_TEST_CASE(bad_paths_throw)
   CGAL_HC_CHECK_THROWS(SSW::shortest_loop_through_base(s, vertex_path(s, realize(S, longw))), SSW::Precision_error);
   (void)jump;
 }
+
+CGAL_HC_TEST_CASE(greedy_basis_words_cgal_oracle)
+{
+  RPS S(2, 4);
+  Surface s(S.mesh, S.length);
+  Solver solver(s, S.base); // computed greedy homotopy basis
+  CGAL_HC_CHECK(!solver.is_canonical());
+  CGAL_HC_CHECK(solver.relator().size() == 8);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+  CGAL_HC_CHECK(cst.is_contractible(pos(S.mesh, solver.realize(solver.relator()))));
+  for(int i = 0; i < 4; ++i) {
+    CGAL_HC_CHECK(!cst.is_contractible(pos(S.mesh, solver.generator(std::size_t(i)))));
+    CGAL_HC_CHECK(solver.word(vertex_path(s, solver.generator(std::size_t(i)))) == SSW::Word{i + 1});
+  }
+  std::mt19937 rng(77);
+  for(std::size_t len : {10, 100, 1000, 10000}) {
+    for(int trial = 0; trial < 3; ++trial) {
+      const auto hs = random_loop(S.mesh, S.base, len, rng);
+      const SSW::Word w = solver.word(vertex_path(s, hs));
+      CGAL_HC_CHECK_MSG(w.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                  : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(w))),
+                        "length " << len << " word " << solver.word_to_string(w));
+    }
+  }
+}
+
+#ifdef SSW_HAS_RICCI_FLOW
+// CGAL's demo meshes with the hyperbolic metric of the Discrete_Ricci_flow package (intrinsic triangulation)
+CGAL_HC_TEST_CASE(ricci_flow_meshes_translation_lengths_and_words)
+{
+  typedef CGAL::Ricci_flow::Discrete_metric<CGAL::Epick::Point_3> Metric;
+  typedef Metric::Mesh IMesh;
+  typedef SSW::Hyperbolic_surface<IMesh, Metric::Edge_length_map> ISurface;
+  typedef SSW::Shortest_word_solver<IMesh, Metric::Edge_length_map> ISolver;
+  for(const char* name : {"/meshes/eight.off", "/meshes/elephant.off"}) {
+    IMesh input;
+    CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_CGAL_DATA_DIR) + name, input));
+    const Metric metric = CGAL::Ricci_flow::hyperbolic_uniformization(input);
+    CGAL_HC_CHECK(metric.converged());
+    const IMesh& m = metric.intrinsic_mesh();
+    ISurface s(m, metric.edge_length_map(), 1e-6);
+    CGAL_HC_CHECK(s.genus() == metric.genus() && s.genus() >= 2);
+    CGAL::Ricci_flow::Hyperbolic_embedding<CGAL::Epick::Point_3> emb(metric);
+    // the shortest loop freely homotopic to each basis loop has the translation length of its deck
+    // transformation, 2 acosh(|trace| / 2)
+    for(std::size_t i = 0; i < emb.number_of_generators(); ++i) {
+      const auto loop = s.path_from_halfedges(emb.homotopy_basis()[i]);
+      const auto r = SSW::shortest_homotopic_loop(s, loop);
+      CGAL_HC_CHECK_MSG(std::abs(r.length - emb.translation_length(i)) < 1e-6,
+                        name << " loop " << i << ": " << r.length << " vs " << emb.translation_length(i));
+      CGAL_HC_CHECK(r.length <= s.path_length(loop) + 1e-9);
+    }
+    // words in the computed basis, checked with CGAL's oracle on the intrinsic triangulation
+    ISolver solver(s, emb.base_vertex());
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<IMesh> cst(m);
+    std::mt19937 rng(3);
+    for(std::size_t len : {10, 100, 1000, 10000}) {
+      for(int trial = 0; trial < 2; ++trial) {
+        // random closed walk from the base vertex
+        std::vector<IMesh::Halfedge_index> hs;
+        auto v = emb.base_vertex();
+        for(std::size_t i = 0; i < len; ++i) {
+          std::vector<IMesh::Halfedge_index> out;
+          for(auto h : CGAL::halfedges_around_source(v, m)) out.push_back(h);
+          hs.push_back(out[rng() % out.size()]);
+          v = m.target(hs.back());
+        }
+        std::map<IMesh::Vertex_index, IMesh::Halfedge_index> parent;
+        std::queue<IMesh::Vertex_index> q; q.push(emb.base_vertex()); parent[emb.base_vertex()] = IMesh::null_halfedge();
+        while(!q.empty()) {
+          auto u = q.front(); q.pop();
+          for(auto h : CGAL::halfedges_around_source(u, m))
+            if(!parent.count(m.target(h))) { parent[m.target(h)] = h; q.push(m.target(h)); }
+        }
+        while(v != emb.base_vertex()) { auto h = parent[v]; hs.push_back(m.opposite(h)); v = m.source(h); }
+        // (the walk back is appended reversed: rebuild it in order)
+        std::vector<IMesh::Halfedge_index> walk(hs.begin(), hs.begin() + std::ptrdiff_t(len));
+        std::vector<IMesh::Halfedge_index> back(hs.begin() + std::ptrdiff_t(len), hs.end());
+        walk.insert(walk.end(), back.begin(), back.end());
+        CGAL::Surface_mesh_topology::Path_on_surface<IMesh> p1(m), p2(m);
+        bool connected = true;
+        for(std::size_t i = 0; i + 1 < walk.size(); ++i) connected = connected && m.target(walk[i]) == m.source(walk[i + 1]);
+        if(!connected) continue;
+        for(auto h : walk) p1.push_back(h);
+        const SSW::Word w = solver.word(s.path_from_halfedges(walk));
+        for(auto h : solver.realize(w)) p2.push_back(h);
+        CGAL_HC_CHECK_MSG(w.empty() ? cst.is_contractible(p1) : cst.are_base_point_homotopic(p1, p2),
+                          name << " length " << len << " word " << solver.word_to_string(w));
+      }
+    }
+  }
+}
+#endif
 
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }

@@ -102,7 +102,7 @@ public:
   typedef Surface_point<TriangleMesh> Point;
   typedef Surface_path<TriangleMesh>  Path;
 
-  Hyperbolic_surface(const TriangleMesh& tm, EdgeLengthMap lengths, double angle_tolerance = 1e-8)
+  Hyperbolic_surface(const TriangleMesh& tm, EdgeLengthMap lengths, double angle_tolerance = 1e-6)
     : tm_(tm), lengths_(lengths), angle_tolerance_(angle_tolerance)
   {
     check();

@@ -10,6 +10,8 @@
 #include <CGAL/Surface_shortest_words/internal/words.h>
 
 #include <algorithm>
+#include <functional>
+#include <queue>
 #include <set>
 #include <sstream>
 #include <string>
@@ -127,7 +129,63 @@ public:
     : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options)
   {
     validate();
-    build_letters();
+    canonical_ = true;
+    std::unordered_map<halfedge_descriptor, int> labels;
+    for(std::size_t i = 0; i < gens_.size(); ++i)
+      for(std::size_t k = 0; k < gens_[i].size(); ++k) {
+        labels[gens_[i][k]] = k == 0 ? int(i) + 1 : 0;
+        labels[opposite(gens_[i][k], tm_)] = k == 0 ? -(int(i) + 1) : 0;
+      }
+    build_cut_system(labels, gens_[0].front());
+    Word canonical;
+    for(int i = 0; i < g_; ++i) {
+      canonical.push_back(2 * i + 1); canonical.push_back(2 * i + 2);
+      canonical.push_back(-(2 * i + 1)); canonical.push_back(-(2 * i + 2));
+    }
+    if(relator_ != canonical)
+      throw Invalid_generators_error("Shortest_word_solver: not a canonical system: the boundary of the cut disk reads " +
+                                     to_string(relator_) + " instead of " + to_string(canonical));
+    shorten();
+  }
+
+  /*!
+    Computes a system of loops itself: the greedy homotopy basis of Erickson and Whittlesey (the tree of
+    shortest paths from `base` for the hyperbolic edge lengths, a maximum spanning tree of the dual graph
+    for the lengths of the loops of the remaining edges, and the 2g loops of the edges in neither tree).
+    The loops x1, ..., x_{2g} (tree path, edge, tree path back) generate pi_1(S, p); their relator (read
+    around the cut disk) is in general not the canonical one, and `is_canonical()` is false: words are
+    then words in x1, ..., x_{2g}, Dehn-reduced for that relator (not guaranteed shortest). Making the
+    basis canonical (cut and paste) is not implemented.
+    Cost: O(n log n) for a mesh of size n.
+  */
+  Shortest_word_solver(const Surface& surface, vertex_descriptor base,
+                       const Shortest_word_options& options = Shortest_word_options())
+    : s_(surface), tm_(surface.mesh()), p_(base), opt_(options)
+  {
+    g_ = s_.genus();
+    canonical_ = false;
+    std::unordered_map<halfedge_descriptor, int> labels;
+    halfedge_descriptor first = greedy_basis(labels);
+    build_cut_system(labels, first);
+    shorten();
+  }
+
+  /// true for a user-given canonical system a1, b1, ..., false for the computed greedy basis x1, x2, ...
+  bool is_canonical() const { return canonical_; }
+
+  /// the word as text: "a1 b1 a1^-1 ..." for a canonical system, "x1 x3^-1 ..." otherwise
+  std::string word_to_string(const Word& w) const
+  {
+    if(canonical_) return to_string(w);
+    if(w.empty()) return "1";
+    std::ostringstream os;
+    for(std::size_t i = 0; i < w.size(); ++i) os << (i ? " " : "") << "x" << std::abs(w[i]) << (w[i] < 0 ? "^-1" : "");
+    return os.str();
+  }
+
+private:
+  void shorten()
+  {
     if(opt_.shorten_generators) {
       for(std::size_t i = 0; i < gens_.size(); ++i) {
         Shortest_path_result<TriangleMesh> r =
@@ -137,6 +195,8 @@ public:
       }
     }
   }
+
+public:
 
   int genus() const { return g_; }
   vertex_descriptor base() const { return p_; }
@@ -210,7 +270,7 @@ private:
   {
     auto it = exit_side_.find(h);
     if(it == exit_side_.end()) return;
-    internal::append_reduced(w, side_words_[std::size_t(it->second - 1)]);
+    internal::append_reduced(w, side_words_[std::size_t(it->second)]);
   }
 
   // moves from face a to face b (both containing point p), emitting the letters of the generators crossed
@@ -279,79 +339,124 @@ private:
         }
       }
     }
-    // ends at p in counterclockwise order: outgoing halfedges o -> opposite(prev(o))
-    std::unordered_map<halfedge_descriptor, int> end_of; // +(i+1): start of loop i, -(i+1): end of loop i
-    for(std::size_t i = 0; i < gens_.size(); ++i) {
-      end_of[gens_[i].front()] = int(i) + 1;
-      end_of[opposite(gens_[i].back(), tm_)] = -(int(i) + 1);
-    }
-    std::vector<halfedge_descriptor> ends;
-    {
-      const halfedge_descriptor o0 = gens_[0].front();
-      halfedge_descriptor o = o0;
-      do {
-        if(end_of.count(o)) ends.push_back(o);
-        o = opposite(prev(o, tm_), tm_);
-      } while(o != o0);
-    }
-    if(ends.size() != 4 * std::size_t(g_)) throw Invalid_generators_error("Shortest_word_solver: inconsistent ends at the base vertex");
-    std::unordered_map<halfedge_descriptor, std::size_t> pos;
-    for(std::size_t i = 0; i < ends.size(); ++i) pos[ends[i]] = i;
-    // walk around the disk: leave along e, arrive at the other end of the loop, leave along its cw predecessor
-    relator_.clear();
-    halfedge_descriptor e = gens_[0].front();
-    std::vector<bool> seen(ends.size(), false);
-    for(std::size_t step = 0; step < ends.size(); ++step) {
-      if(seen[pos[e]]) break;
-      seen[pos[e]] = true;
-      const int code = end_of[e];
-      relator_.push_back(code);
-      const std::size_t li = std::size_t(std::abs(code) - 1);
-      const halfedge_descriptor arrive = code > 0 ? opposite(gens_[li].back(), tm_) : gens_[li].front();
-      e = ends[(pos[arrive] + ends.size() - 1) % ends.size()];
-    }
-    Word canonical;
-    for(int i = 0; i < g_; ++i) {
-      canonical.push_back(2 * i + 1); canonical.push_back(2 * i + 2);
-      canonical.push_back(-(2 * i + 1)); canonical.push_back(-(2 * i + 2));
-    }
-    if(relator_.size() != ends.size() || e != gens_[0].front())
-      throw Invalid_generators_error("Shortest_word_solver: the loops do not cut the surface into one disk (boundary word " +
-                                     to_string(relator_) + ")");
-    if(relator_ != canonical)
-      throw Invalid_generators_error("Shortest_word_solver: not a canonical system: the boundary of the cut disk reads " +
-                                     to_string(relator_) + " instead of " + to_string(canonical));
-    base_face_ = face(gens_[0].front(), tm_);
   }
 
-  void build_letters()
+  // The cut graph G (halfedges in `labels`, label 0 or +-(i+1)) cuts the surface into one disk D. Walk
+  // around D with D on the left, starting along `first` (the base corner is the corner of D at p on the
+  // left of `first`); position k has halfedge beta_k, c_k = number of labels read in positions 1..k. Leaving
+  // D across beta_k (from face(beta_k)) moves to the neighbouring copy of D, i.e. multiplies by
+  // h_k = W_k W_{j-1}^-1 (W_k = the labels read so far, j the position of opposite(beta_k)).
+  void build_cut_system(const std::unordered_map<halfedge_descriptor, int>& labels, halfedge_descriptor first)
   {
-    const int n = int(relator_.size());
-    // side k (1-based) has letter relator_[k-1]; partner side j has the inverse letter
-    std::vector<int> partner(n + 1, 0);
-    for(int k = 1; k <= n; ++k)
-      for(int j = 1; j <= n; ++j)
-        if(relator_[j - 1] == -relator_[k - 1]) partner[k] = j;
-    side_words_.assign(n, Word());
-    for(int k = 1; k <= n; ++k) {
-      Word w(relator_.begin(), relator_.begin() + k);
-      const int j = partner[k];
-      for(int i = j - 1; i >= 1; --i) w.push_back(-relator_[i - 1]);
-      side_words_[k - 1] = internal::free_reduce(w);
+    std::unordered_map<halfedge_descriptor, std::size_t> pos;
+    std::vector<std::size_t> count(1, 0); // count[k] = c_k
+    relator_.clear();
+    halfedge_descriptor beta = first;
+    const std::size_t n = labels.size();
+    for(std::size_t k = 1; k <= n; ++k) {
+      if(!pos.emplace(beta, k).second) break;
+      const int l = labels.at(beta);
+      if(l != 0) relator_.push_back(l);
+      count.push_back(relator_.size());
+      // next: the first halfedge of G clockwise from opposite(beta) around target(beta)
+      const halfedge_descriptor back = opposite(beta, tm_);
+      halfedge_descriptor o = back;
+      do { o = next(opposite(o, tm_), tm_); } while(o != back && !labels.count(o));
+      beta = o;
     }
-    // sides of each generator halfedge
-    for(std::size_t i = 0; i < gens_.size(); ++i) {
-      const int letter = int(i) + 1;
-      int k_fwd = 0, k_bwd = 0;
-      for(int k = 1; k <= n; ++k) {
-        if(relator_[k - 1] == letter) k_fwd = k;
-        if(relator_[k - 1] == -letter) k_bwd = k;
+    if(pos.size() != n || beta != first)
+      throw Invalid_generators_error("Shortest_word_solver: the loops do not cut the surface into one disk (boundary word " +
+                                     to_string(relator_) + ")");
+    if(relator_.size() != 4 * std::size_t(g_))
+      throw Invalid_generators_error("Shortest_word_solver: the cut disk has " + std::to_string(relator_.size()) +
+                                     " labelled sides instead of 4g");
+    const std::size_t m = relator_.size() + 1;
+    side_words_.assign(m * m, Word());
+    for(std::size_t a = 0; a < m; ++a)
+      for(std::size_t b = 0; b < m; ++b) {
+        Word w(relator_.begin(), relator_.begin() + std::ptrdiff_t(a));
+        internal::append_reduced(w, internal::inverse(Word(relator_.begin(), relator_.begin() + std::ptrdiff_t(b))));
+        side_words_[a * m + b] = w;
       }
-      for(halfedge_descriptor h : gens_[i]) {
-        exit_side_[h] = k_fwd;                   // leaving the face on the left of the loop: side s_k = a
-        exit_side_[opposite(h, tm_)] = k_bwd;    // leaving the face on its right: side s_j = a^-1
+    exit_side_.clear();
+    for(const auto& hp : pos) {
+      const std::size_t k = hp.second, j = pos.at(opposite(hp.first, tm_));
+      const std::size_t a = count[k], b = count[j - 1];
+      if(a != b) exit_side_[hp.first] = int(a * m + b); // a == b: the trivial element
+    }
+    base_face_ = face(first, tm_);
+  }
+
+  // greedy homotopy basis (Erickson-Whittlesey); fills the labels of the cut graph and the generator loops
+  halfedge_descriptor greedy_basis(std::unordered_map<halfedge_descriptor, int>& labels)
+  {
+    typedef typename Surface::edge_descriptor edge_descriptor;
+    // shortest path tree from p (Dijkstra)
+    std::unordered_map<vertex_descriptor, double> dist;
+    std::unordered_map<vertex_descriptor, halfedge_descriptor> parent; // halfedge reaching the vertex
+    typedef std::pair<double, vertex_descriptor> QE;
+    std::priority_queue<QE, std::vector<QE>, std::greater<QE> > queue;
+    dist[p_] = 0; queue.push(QE(0, p_));
+    while(!queue.empty()) {
+      const QE top = queue.top(); queue.pop();
+      if(top.first > dist[top.second]) continue;
+      for(halfedge_descriptor h : CGAL::halfedges_around_source(top.second, tm_)) {
+        const double d = top.first + s_.length(h);
+        const vertex_descriptor t = target(h, tm_);
+        auto it = dist.find(t);
+        if(it == dist.end() || d < it->second) { dist[t] = d; parent[t] = h; queue.push(QE(d, t)); }
       }
     }
+    std::set<edge_descriptor> tree;
+    for(const auto& vp : parent) tree.insert(edge(vp.second, tm_));
+    // maximum spanning tree of the dual graph among the other edges, weight = length of the edge's loop
+    std::vector<std::pair<double, edge_descriptor> > others;
+    for(edge_descriptor e : edges(tm_))
+      if(!tree.count(e)) {
+        const halfedge_descriptor h = halfedge(e, tm_);
+        others.push_back(std::make_pair(dist[source(h, tm_)] + s_.length(h) + dist[target(h, tm_)], e));
+      }
+    std::sort(others.begin(), others.end(), [](const std::pair<double, edge_descriptor>& x, const std::pair<double, edge_descriptor>& y) {
+      return x.first > y.first; });
+    std::unordered_map<face_descriptor, face_descriptor> uf;
+    for(face_descriptor f : faces(tm_)) uf[f] = f;
+    auto find = [&](face_descriptor f) {
+      face_descriptor r = f;
+      while(uf[r] != r) r = uf[r];
+      while(uf[f] != r) { face_descriptor nx = uf[f]; uf[f] = r; f = nx; }
+      return r;
+    };
+    std::vector<edge_descriptor> leftover;
+    for(const auto& we : others) {
+      const halfedge_descriptor h = halfedge(we.second, tm_);
+      const face_descriptor a = find(face(h, tm_)), b = find(face(opposite(h, tm_), tm_));
+      if(a != b) uf[a] = b; else leftover.push_back(we.second);
+    }
+    if(leftover.size() != 2 * std::size_t(g_))
+      throw Invalid_generators_error("Shortest_word_solver: the greedy homotopy basis has " + std::to_string(leftover.size()) +
+                                     " loops instead of 2g (the mesh is not a closed orientable surface?)");
+    auto tree_path = [&](vertex_descriptor v) { // halfedges from p to v
+      std::vector<halfedge_descriptor> r;
+      while(v != p_) { const halfedge_descriptor h = parent.at(v); r.push_back(h); v = source(h, tm_); }
+      std::reverse(r.begin(), r.end());
+      return r;
+    };
+    gens_.clear();
+    for(std::size_t i = 0; i < leftover.size(); ++i) {
+      const halfedge_descriptor h = halfedge(leftover[i], tm_);
+      labels[h] = int(i) + 1;
+      labels[opposite(h, tm_)] = -(int(i) + 1);
+      std::vector<halfedge_descriptor> loop = tree_path(source(h, tm_));
+      loop.push_back(h);
+      const std::vector<halfedge_descriptor> back = tree_path(target(h, tm_));
+      for(auto it = back.rbegin(); it != back.rend(); ++it) loop.push_back(opposite(*it, tm_));
+      gens_.push_back(loop);
+    }
+    for(const auto& vp : parent) { labels[vp.second] = 0; labels[opposite(vp.second, tm_)] = 0; }
+    // start along a halfedge of the cut graph leaving p
+    for(halfedge_descriptor h : CGAL::halfedges_around_source(p_, tm_))
+      if(labels.count(h)) return h;
+    throw Invalid_generators_error("Shortest_word_solver: isolated base vertex");
   }
 
   const Surface& s_;
@@ -363,6 +468,7 @@ private:
   Word relator_;
   std::vector<Word> side_words_;
   std::unordered_map<halfedge_descriptor, int> exit_side_;
+  bool canonical_ = true;
   face_descriptor base_face_{};
   std::vector<Path> short_gens_;
   std::vector<double> short_lengths_;

@@ -1,0 +1,126 @@
+// Benchmark of Surface_shortest_words against CGAL's homotopy test, on regular-octagon genus-2 surfaces of
+// growing size and random loops of growing length.
+//
+// For each mesh (subdivision m: 8 m^2 faces) and loop length n (random walk from p closed by a shortest
+// edge path), it prints one line
+//   SSW faces=F edges_in_loop=N word_ms=.. crossing_ms=.. path_ms=.. cgal_ms=.. ratio_word_cgal=.. ...
+// word_ms:     Shortest_word_solver::solve (Algorithm 2 shortening when the lift fits in double precision,
+//              then Algorithm 4 and Dehn reduction);
+// crossing_ms: the exact crossing word + Dehn reduction of the input loop (no geometry);
+// path_ms:     shortest_homotopic_path on a path of the same number of edges that walks out and back (its
+//              lift stays within reach of double precision: measures the linear lifting and tracing);
+// cgal_ms:     CGAL Curves_on_surface_topology::are_base_point_homotopic(loop, word realized on the
+//              generators) in the same run (the quadrangulation is built once per mesh, cgal_build_ms).
+// Usage: bench_surface_shortest_words [max_faces = 1000000] [max_loop_edges = 1000000]
+#include <CGAL/Surface_shortest_words.h>
+#include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
+#include <CGAL/Curves_on_surface_topology.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <queue>
+#include <random>
+
+namespace SSW = CGAL::Surface_shortest_words;
+typedef SSW::Regular_polygon_surface RPS;
+typedef RPS::Mesh Mesh;
+typedef Mesh::Property_map<RPS::Edge_index, double> Length_map;
+typedef SSW::Hyperbolic_surface<Mesh, Length_map> Surface;
+typedef SSW::Shortest_word_solver<Mesh, Length_map> Solver;
+typedef CGAL::Surface_mesh_topology::Path_on_surface<Mesh> Path_on_surface;
+
+static double ms_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+int main(int argc, char** argv)
+{
+  const double max_faces = argc > 1 ? std::atof(argv[1]) : 1e6;
+  const double max_edges = argc > 2 ? std::atof(argv[2]) : 1e6;
+  std::mt19937 rng(1);
+  for(int m : {12, 112, 354}) {
+    if(8.0 * m * m > max_faces * 1.01) break;
+    auto t0 = std::chrono::steady_clock::now();
+    RPS S(2, m);
+    const double build_ms = ms_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    Surface surface(S.mesh, S.length);
+    SSW::Shortest_word_options opt;
+    Solver solver(surface, S.base, S.generators, opt);
+    const double solver_ms = ms_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+    {
+      // force the construction of CGAL's minimal quadrangulation
+      Path_on_surface tiny(S.mesh); tiny.push_back(S.generators[0][0]);
+      Path_on_surface gen(S.mesh); for(auto h : S.generators[0]) gen.push_back(h);
+      (void)cst.is_contractible(gen);
+    }
+    const double cgal_build_ms = ms_since(t0);
+    std::cout << "SSW_MESH faces=" << num_faces(S.mesh) << " build_ms=" << build_ms << " solver_setup_ms=" << solver_ms
+              << " cgal_build_ms=" << cgal_build_ms << std::endl;
+    // BFS tree from p (to close random walks)
+    std::vector<Mesh::Halfedge_index> parent(num_vertices(S.mesh), Mesh::null_halfedge());
+    {
+      std::vector<bool> seen(num_vertices(S.mesh), false);
+      std::queue<Mesh::Vertex_index> q; q.push(S.base); seen[S.base] = true;
+      while(!q.empty()) {
+        auto u = q.front(); q.pop();
+        for(auto h : CGAL::halfedges_around_source(u, S.mesh))
+          if(!seen[S.mesh.target(h)]) { seen[S.mesh.target(h)] = true; parent[S.mesh.target(h)] = h; q.push(S.mesh.target(h)); }
+      }
+    }
+    for(double n = 100; n <= max_edges * 1.01; n *= 10) {
+      std::vector<Mesh::Halfedge_index> hs;
+      Mesh::Vertex_index v = S.base;
+      for(std::size_t i = 0; i < std::size_t(n); ++i) {
+        std::vector<Mesh::Halfedge_index> out;
+        for(auto h : CGAL::halfedges_around_source(v, S.mesh)) out.push_back(h);
+        hs.push_back(out[rng() % out.size()]);
+        v = S.mesh.target(hs.back());
+      }
+      std::vector<Mesh::Halfedge_index> back;
+      while(v != S.base) { auto h = parent[v]; back.push_back(S.mesh.opposite(h)); v = S.mesh.source(h); }
+      hs.insert(hs.end(), back.begin(), back.end());
+      const Surface::Path loop = surface.path_from_halfedges(hs);
+
+      t0 = std::chrono::steady_clock::now();
+      const auto res = solver.solve(loop);
+      const double word_ms = ms_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      const SSW::Word raw = solver.crossing_word(loop);
+      const SSW::Word reduced = SSW::internal::dehn_reduce(raw, solver.relator());
+      const double crossing_ms = ms_since(t0);
+
+      // out-and-back path of about n edges: half a random walk, then back along it, then one more edge
+      std::vector<Mesh::Halfedge_index> ob(hs.begin(), hs.begin() + std::ptrdiff_t(hs.size() / 2));
+      for(std::size_t i = ob.size(); i-- > 0;) ob.push_back(S.mesh.opposite(ob[i]));
+      ob.push_back(hs.front());
+      const Surface::Path out_back = surface.path_from_halfedges(ob);
+      t0 = std::chrono::steady_clock::now();
+      double path_len = -1;
+      std::size_t faces_met = 0;
+      try {
+        const auto sp = SSW::shortest_homotopic_path(surface, out_back);
+        path_len = sp.length; faces_met = sp.embedded_faces;
+      } catch(const SSW::Precision_error&) {}
+      const double path_ms = ms_since(t0);
+
+      Path_on_surface p1(S.mesh), p2(S.mesh);
+      for(auto h : hs) p1.push_back(h);
+      for(auto h : solver.realize(res.word)) p2.push_back(h);
+      t0 = std::chrono::steady_clock::now();
+      const bool same = res.word.empty() ? cst.is_contractible(p1) : cst.are_base_point_homotopic(p1, p2);
+      const double cgal_ms = ms_since(t0);
+      std::cout << "SSW faces=" << num_faces(S.mesh) << " edges_in_loop=" << hs.size() << " word_ms=" << word_ms
+                << " crossing_ms=" << crossing_ms << " path_ms=" << path_ms << " cgal_ms=" << cgal_ms
+                << " ratio_word_cgal=" << word_ms / cgal_ms << " ratio_crossing_cgal=" << crossing_ms / cgal_ms
+                << " geometric=" << res.used_geometry << " word_length=" << res.word.size()
+                << " raw_word_length=" << raw.size() << " same_as_dehn_of_input=" << (reduced == res.word)
+                << " cgal_agrees=" << same << " path_faces=" << faces_met << " path_length=" << path_len << std::endl;
+    }
+  }
+  return EXIT_SUCCESS;
+}
