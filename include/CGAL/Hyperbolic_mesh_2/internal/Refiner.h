@@ -150,13 +150,29 @@ private:
         const std::size_t l = (k + 1) % dirs.size();
         double gap = dirs[l].first - dirs[k].first;
         if(l == 0) gap += 2 * pi;
-        if(gap < pi / 2 - small_angle_tolerance) {
+        if(gap < pi / 2 - small_angle_tolerance && wedge_in_domain(o, dirs[k].second)) {
           small_angle_pairs_.insert(std::minmax(dirs[k].second, dirs[l].second));
           apexes_.insert(o);
           ++st_.small_input_angles;
         }
       }
     }
+  }
+
+  // Is the wedge counterclockwise after input segment s at its endpoint o in the domain? (the face on the left of
+  // the oriented edge o -> other end)
+  bool wedge_in_domain(Vertex_handle o, int s) const
+  {
+    Vertex_handle w = input_segs_[std::size_t(s)].first == o ? input_segs_[std::size_t(s)].second
+                                                              : input_segs_[std::size_t(s)].first;
+    Face_handle f; int i;
+    if(!cdt_.is_edge(o, w, f, i)) return true;
+    for(Face_handle g : {f, f->neighbor(i)}) {
+      if(cdt_.is_infinite(g)) continue;
+      const Vertex_handle x = g->vertex(3 - g->index(o) - g->index(w));
+      if(gt_.orientation_2_object()(o->point(), w->point(), x->point()) == LEFT_TURN) return g->is_in_domain();
+    }
+    return false;
   }
 
   // Corner lopping (thesis Fig. 3.6): every constrained edge at an apex of a small angle is split at distance
