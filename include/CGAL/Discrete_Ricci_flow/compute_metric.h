@@ -171,7 +171,7 @@ bool call_progress_any(const Callback& cb, const Flow_progress& p)
       `input_edge_length_map(m)` (default: Euclidean lengths from `vertex_point_map`),
     - `CGAL::parameters::vertex_point_map`, `vertex_index_map`,
     - `number_of_iterations(n)`: maximum number of Newton iterations (default 100),
-    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians, default 1e-12),
+    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians, default 1e-11),
     - `do_flip(b)`: keep the triangulation intrinsically Delaunay with Ptolemy flips (default true; vertex
       scaling only),
     - `verbose(b)`: one line per iteration on `std::cerr`,
@@ -211,7 +211,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   const Background_geometry geo = internal::get_background(np, Background_geometry::HYPERBOLIC);
   const Scheme scheme = choose_parameter(get_parameter(np, internal_np::ricci_scheme), Scheme::VERTEX_SCALING);
   const int max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 100);
-  const double accuracy = choose_parameter(get_parameter(np, internal_np::accuracy), 1e-12);
+  const double accuracy = choose_parameter(get_parameter(np, internal_np::accuracy), 1e-11);
   const bool do_flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   const auto callback = get_parameter(np, internal_np::callback);
@@ -362,9 +362,12 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   Eigen::SparseMatrix<double> Hm(n, n);
   Eigen::VectorXd rhs(n), delta(n);
   std::vector<double> u_old, g_old;
+  double best_err = err;
+  int iterations_without_progress = 0;
   while(st.status == Flow_status::MAXIMUM_ITERATIONS) {
     if(err < accuracy) { st.status = Flow_status::CONVERGED; break; }
     if(st.iterations >= max_iterations) break;
+    if(iterations_without_progress >= 5) { st.status = Flow_status::STAGNATED; break; }
     // Hessian dK/du
     eng.hessian_triplets(trip);
     if(gauge) {
@@ -422,6 +425,8 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
       st.status = Flow_status::LINE_SEARCH_FAILED; break;
     }
     ++st.iterations;
+    if(err < 0.5 * best_err) { best_err = err; iterations_without_progress = 0; }
+    else ++iterations_without_progress;
     st.error_history.push_back(err);
     st.energy_history.push_back(energy);
     Flow_progress pr; pr.iteration = st.iterations; pr.max_curvature_error = err; pr.step_length = t;

@@ -48,7 +48,9 @@ enum class Flow_status {
   LINE_SEARCH_FAILED,      ///< no step along the Newton direction decreased the energy
   NUMERICAL_FAILURE,       ///< the Hessian could not be factorized or a non-finite value appeared
   FLIP_LIMIT_REACHED,      ///< the Delaunay flip loop exceeded its budget
-  CANCELLED                ///< the progress callback asked to stop
+  CANCELLED,               ///< the progress callback asked to stop
+  STAGNATED                ///< five iterations without halving the error: the rounding floor of double
+                           ///< arithmetic is above the requested accuracy (the error reached is reported)
 };
 
 inline const char* to_string(Flow_status s)
@@ -59,7 +61,8 @@ inline const char* to_string(Flow_status s)
     case Flow_status::LINE_SEARCH_FAILED: return "line search failed";
     case Flow_status::NUMERICAL_FAILURE: return "numerical failure";
     case Flow_status::FLIP_LIMIT_REACHED: return "flip limit reached";
-    default: return "cancelled";
+    case Flow_status::CANCELLED: return "cancelled";
+    default: return "stagnated (rounding floor above the requested accuracy)";
   }
 }
 
