@@ -11,6 +11,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -26,7 +27,7 @@ struct Shortest_path_options
 {
   /// the lifted end point must lie within this hyperbolic distance of the start (double precision keeps
   /// about 16 digits; at distance d a point of the Poincare disk is known to about 1e-16 e^d)
-  double max_lift_distance = 30.0;
+  double max_lift_distance = 25.0;
   /// a crossing closer than this fraction of an edge to a vertex is snapped to the vertex
   double vertex_snap = 1e-9;
   /// progress callback (number of faces processed so far); called every 2^16 faces if set
@@ -163,6 +164,95 @@ private:
   std::size_t count_ = 0;
 };
 
+
+// Exact reduction of a sequence of crossed edges (each crossing goes from face(h) to face(opposite(h))):
+// an immediate backtrack cancels, and more than half a turn around a vertex is replaced by the shorter turn
+// the other way (a full turn disappears). Both are homotopies that fix the end points. Stack based, linear.
+template <class TriangleMesh>
+class Crossing_reducer
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  struct Entry { halfedge_descriptor h; std::size_t ccw, cw; };
+public:
+  explicit Crossing_reducer(const TriangleMesh& tm) : tm_(tm) {}
+
+  void push(halfedge_descriptor c)
+  {
+    todo_.push_back(c);
+    while(!todo_.empty()) {
+      c = todo_.front(); todo_.pop_front();
+      if(!st_.empty() && st_.back().h == opposite(c, tm_)) { st_.pop_back(); continue; }
+      std::size_t rccw = 1, rcw = 1;
+      if(!st_.empty()) {
+        if(c == prev(opposite(st_.back().h, tm_), tm_)) rccw = st_.back().ccw + 1;
+        if(c == next(opposite(st_.back().h, tm_), tm_)) rcw = st_.back().cw + 1;
+      }
+      st_.push_back(Entry{c, rccw, rcw});
+      const std::size_t dccw = CGAL::halfedges_around_target(target(c, tm_), tm_).size();
+      const std::size_t dcw = CGAL::halfedges_around_target(source(c, tm_), tm_).size();
+      std::vector<halfedge_descriptor> rep;
+      if(2 * rccw > dccw) {
+        // counterclockwise around target(c): replace by the clockwise turn
+        halfedge_descriptor h = st_[st_.size() - rccw].h;
+        const auto B = face(opposite(c, tm_), tm_);
+        st_.resize(st_.size() - rccw);
+        while(face(h, tm_) != B) { rep.push_back(next(h, tm_)); h = opposite(next(h, tm_), tm_); }
+      } else if(2 * rcw > dcw) {
+        // clockwise around source(c): replace by the counterclockwise turn
+        halfedge_descriptor h = prev(st_[st_.size() - rcw].h, tm_);
+        const auto B = face(opposite(c, tm_), tm_);
+        st_.resize(st_.size() - rcw);
+        while(face(h, tm_) != B) { rep.push_back(h); h = prev(opposite(h, tm_), tm_); }
+      } else {
+        continue;
+      }
+      todo_.insert(todo_.begin(), rep.begin(), rep.end());
+    }
+  }
+
+  std::vector<halfedge_descriptor> result() const
+  {
+    std::vector<halfedge_descriptor> r;
+    r.reserve(st_.size());
+    for(const Entry& e : st_) r.push_back(e.h);
+    return r;
+  }
+
+private:
+  const TriangleMesh& tm_;
+  std::vector<Entry> st_;
+  std::deque<halfedge_descriptor> todo_;
+};
+
+// the crossings from face a to face b, both containing point p (across the edge of p, or the shorter way
+// around the vertex p)
+template <class Surface, class Reducer>
+void crossings_between(const Surface& s, const typename Surface::Point& p, typename Surface::face_descriptor a,
+                       typename Surface::face_descriptor b, Reducer& out)
+{
+  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
+  const auto& tm = s.mesh();
+  if(a == b) return;
+  if(!p.on_vertex) {
+    halfedge_descriptor h = p.h;
+    if(face(h, tm) != a) h = opposite(h, tm);
+    if(face(h, tm) != a || face(opposite(h, tm), tm) != b) throw Invalid_path_error("Surface_shortest_words: inconsistent path");
+    out.push(h);
+    return;
+  }
+  halfedge_descriptor h0 = halfedge(a, tm);
+  while(target(h0, tm) != p.v) h0 = next(h0, tm);
+  std::vector<halfedge_descriptor> ccw, cw;
+  halfedge_descriptor h = h0;
+  while(face(h, tm) != b) {
+    ccw.push_back(h); h = prev(opposite(h, tm), tm);
+    if(h == h0) throw Invalid_path_error("Surface_shortest_words: face not incident to the vertex");
+  }
+  h = h0;
+  while(face(h, tm) != b) { cw.push_back(next(h, tm)); h = opposite(next(h, tm), tm); }
+  for(halfedge_descriptor c : (ccw.size() <= cw.size() ? ccw : cw)) out.push(c);
+}
+
 template <class Surface, class Chart>
 void move_across_point(const Surface& s, Chart& chart, const typename Surface::Point& p,
                        typename Surface::face_descriptor target)
@@ -236,20 +326,29 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
   Shortest_path_result<typename Surface::Triangle_mesh> res;
   if(path.size() == 1) { res.path = path; return res; }
 
-  // ---- lift (steps 1-3): transient embedding along the path
-  internal::Transient_chart<Surface> chart(surface);
+  // ---- lift (steps 1-3): the faces met by the path, as the sequence of crossed edges (a path in the dual
+  // graph of the universal cover), exactly reduced (backtracks cancelled, turns around a vertex by more than
+  // half its degree replaced by the turn the other way: both fix the lifted end point), then embedded
+  // transiently: one face at a time, unfolded across the next edge, the chart re-centred at every step.
+  internal::Crossing_reducer<typename Surface::Triangle_mesh> reducer(tm);
   face_descriptor f = surface.common_face(path[0], path[1], boost::graph_traits<typename Surface::Triangle_mesh>::null_face());
-  chart.set_face(f);
+  const face_descriptor start_face = f;
+  for(std::size_t i = 1; i + 1 < path.size(); ++i) {
+    const face_descriptor fn = surface.common_face(path[i], path[i + 1], f);
+    internal::crossings_between(surface, path[i], f, fn, reducer);
+    f = fn;
+  }
+  internal::Transient_chart<Surface> chart(surface);
+  chart.set_face(start_face);
   chart.recentre(surface.position_in_face(path[0], chart.h0(), chart.z()));
-  const face_descriptor start_face = chart.current_face();
   chart.reset_accumulated();
   std::size_t next_report = std::size_t(1) << 16;
-  for(std::size_t i = 1; i + 1 < path.size(); ++i) {
-    const face_descriptor fn = surface.common_face(path[i], path[i + 1], chart.current_face());
-    internal::move_across_point(surface, chart, path[i], fn);
-    chart.recentre(surface.position_in_face(path[i], chart.h0(), chart.z()));
+  for(halfedge_descriptor c : reducer.result()) {
+    chart.unfold(c);
+    chart.recentre(chart.z()[0]);
     if(options.progress && chart.count() >= next_report) { options.progress(chart.count()); next_report <<= 1; }
   }
+  CGAL_assertion(chart.current_face() == f);
   const Cplx end_local = surface.position_in_face(path.back(), chart.h0(), chart.z());
   Cplx T = internal::apply_isometry(chart.accumulated().inverse(), end_local);
   res.lift_distance = internal::distance_to_origin(T);
