@@ -125,7 +125,7 @@ public:
   };
 
   /*!
-    Builds the embedding. `metric` must be a converged metric of a closed surface with a hyperbolic background
+    Builds the embedding (`metric` must outlive it). `metric` must be a converged (or stagnated below 1e-9) metric of a closed surface with a hyperbolic background
     (genus >= 2) or a Euclidean background (genus 1), with zero target curvature everywhere (no cones).
     \throws Ricci_flow_error otherwise.
   */
@@ -142,7 +142,9 @@ public:
     const long g = metric.genus();
     if(hyperbolic_ && g < 2) throw Ricci_flow_error("a hyperbolic embedding needs genus >= 2");
     if(!hyperbolic_ && g != 1) throw Ricci_flow_error("a Euclidean embedding needs genus 1");
-    if(!metric.converged()) throw Ricci_flow_error("the metric did not converge");
+    if(!metric.converged() && !(metric.statistics().status == Flow_status::STAGNATED &&
+                                metric.statistics().max_curvature_error < 1e-9))
+      throw Ricci_flow_error("the metric did not converge");
     build_homotopy_basis();
     build_domain_cut();
     layout();
