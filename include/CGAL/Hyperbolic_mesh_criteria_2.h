@@ -34,9 +34,9 @@ enum class Face_badness { GOOD = 0, BAD_ANGLE = 1, BAD_SIZE = 2 };
 
   A face pqr is *skinny* if the central angle of its shortest edge in its hyperbolic circumcircle is below
   `alpha`, and *too big* if its hyperbolic circumradius exceeds `epsilon` (optional). Faces whose circumcircle is
-  not compact (horocycle / hypercycle, "infinite radius") are skinny. Both tests are the traits' exact predicates
-  `Compare_central_angle_2` (threshold sin^2(alpha/2)) and `Compare_hyperbolic_circumradius_2`
-  (threshold cosh^2(epsilon)).
+  not compact (horocycle / hypercycle, "infinite radius") are skinny. Both tests are exact: the traits' predicate
+  `Compare_central_angle_2` (threshold sin^2(alpha/2)) and the sign of sinh^2 r - sinh^2 epsilon (the same
+  comparison as `Compare_hyperbolic_circumradius_2`, written without the cancellation of cosh^2 for tiny radii).
 
   The central angle is twice the Euclidean minimum angle in the Euclidean limit: CGAL Mesh_2's bound
   `B = sin^2(min angle)` is the same number as `sin2_half_alpha()` here (`B = 0.125` <-> alpha = 41.41 degrees).
@@ -113,8 +113,7 @@ public:
   /// The exact classification of the face (p, q, r): `BAD_SIZE` first, then `BAD_ANGLE`, else `GOOD`.
   Hyperbolic_mesh_2::Face_badness badness(const Point_2& p, const Point_2& q, const Point_2& r) const
   {
-    if(has_size_bound() &&
-       gt_.compare_hyperbolic_circumradius_2_object()(p, q, r, cosh2_epsilon_) == LARGER)
+    if(has_size_bound() && Hyperbolic_mesh_2::internal::circumradius_larger_than(p, q, r, sinh2_epsilon_))
       return Hyperbolic_mesh_2::Face_badness::BAD_SIZE;
     if(gt_.compare_central_angle_2_object()(p, q, r, FT(sin2_half_alpha_)) == SMALLER)
       return Hyperbolic_mesh_2::Face_badness::BAD_ANGLE;
@@ -123,6 +122,9 @@ public:
   Hyperbolic_mesh_2::Face_badness badness(Face_handle f) const
   { return badness(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()); }
   bool is_bad(Face_handle f) const { return badness(f) != Hyperbolic_mesh_2::Face_badness::GOOD; }
+  /// The angle test alone (exact).
+  bool is_skinny(const Point_2& p, const Point_2& q, const Point_2& r) const
+  { return gt_.compare_central_angle_2_object()(p, q, r, FT(sin2_half_alpha_)) == SMALLER; }
 
   /// short description for reports
   std::string description() const
@@ -137,15 +139,15 @@ private:
     if(!(epsilon > 0))
       throw std::invalid_argument("Hyperbolic_mesh_criteria_2: epsilon must be > 0 (or +infinity)");
     epsilon_ = epsilon;
-    const double c = std::cosh(epsilon);
-    cosh2_epsilon_ = std::isfinite(epsilon) && std::isfinite(c * c) ? FT(c * c) : FT(0);
-    if(std::isfinite(epsilon) && !std::isfinite(c * c))
-      throw std::invalid_argument("Hyperbolic_mesh_criteria_2: epsilon too large (cosh^2 overflows); use infinity");
+    const double sh = std::sinh(epsilon);
+    if(std::isfinite(epsilon) && !std::isfinite(sh * sh))
+      throw std::invalid_argument("Hyperbolic_mesh_criteria_2: epsilon too large (sinh^2 overflows); use infinity");
+    sinh2_epsilon_ = std::isfinite(epsilon) ? FT(sh * sh) : FT(0);
   }
 
   Geom_traits gt_;
   double alpha_ = 0, sin2_half_alpha_ = 0, epsilon_ = 0;
-  FT cosh2_epsilon_ = FT(0);
+  FT sinh2_epsilon_ = FT(0);
 };
 
 /*!
@@ -156,7 +158,7 @@ private:
 
   Since theta*(r) is the central angle of a chord of length r in a circle of radius r, "central angle below
   theta*(r)" is exactly "shortest edge shorter than r": the test is one exact polynomial sign
-  (`(1 + 2A)^2 Delta < (A - G)^2`, see `internal/exact_quality.h`), evaluated with interval arithmetic and an
+  (sinh^2 of the edge vs sinh^2 r, see `internal/exact_quality.h`), evaluated with interval arithmetic and an
   exact rational fallback. Output meshes therefore have central angles >= theta*(epsilon).
 */
 template <class CDT>
@@ -175,11 +177,11 @@ public:
     : gt_(gt)
   {
     if(!(epsilon > 0)) throw std::invalid_argument("Hyperbolic_Chew_mesh_criteria_2: epsilon must be > 0");
-    const double c = std::cosh(epsilon);
-    if(std::isfinite(epsilon) && !std::isfinite(c * c))
-      throw std::invalid_argument("Hyperbolic_Chew_mesh_criteria_2: epsilon too large (cosh^2 overflows)");
+    const double sh = std::sinh(epsilon);
+    if(std::isfinite(epsilon) && !std::isfinite(sh * sh))
+      throw std::invalid_argument("Hyperbolic_Chew_mesh_criteria_2: epsilon too large (sinh^2 overflows)");
     epsilon_ = epsilon;
-    cosh2_epsilon_ = std::isfinite(epsilon) ? FT(c * c) : FT(0);
+    sinh2_epsilon_ = std::isfinite(epsilon) ? FT(sh * sh) : FT(0);
   }
 
   double epsilon() const { return epsilon_; }
@@ -190,8 +192,7 @@ public:
 
   Hyperbolic_mesh_2::Face_badness badness(const Point_2& p, const Point_2& q, const Point_2& r) const
   {
-    if(has_size_bound() &&
-       gt_.compare_hyperbolic_circumradius_2_object()(p, q, r, cosh2_epsilon_) == LARGER)
+    if(has_size_bound() && Hyperbolic_mesh_2::internal::circumradius_larger_than(p, q, r, sinh2_epsilon_))
       return Hyperbolic_mesh_2::Face_badness::BAD_SIZE;
     if(Hyperbolic_mesh_2::internal::has_edge_shorter_than_circumradius(p, q, r))
       return Hyperbolic_mesh_2::Face_badness::BAD_ANGLE;
@@ -210,7 +211,7 @@ public:
 private:
   Geom_traits gt_;
   double epsilon_ = 0;
-  FT cosh2_epsilon_ = FT(0);
+  FT sinh2_epsilon_ = FT(0);
 };
 
 } // namespace CGAL

@@ -380,7 +380,8 @@ private:
     Point c = gt_.construct_hyperbolic_circumcenter_2_object()(p0, p1, p2);
     bool off = false;
     if constexpr(!is_Chew) {
-      if(prm_.off_centers() && badness == Face_badness::BAD_ANGLE) off = off_center(f, c);
+      if(prm_.off_centers() && (badness == Face_badness::BAD_ANGLE || crit_.is_skinny(p0, p1, p2)))
+        off = off_center(f, c);
     }
     insert_steiner(f, c, off);
   }

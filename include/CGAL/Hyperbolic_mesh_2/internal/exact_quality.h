@@ -19,9 +19,10 @@ namespace Hyperbolic_mesh_2 {
 namespace internal {
 
 // Chew's test "some edge is shorter than the circumradius r" as a polynomial sign (POSITIVE: yes, or the
-// circumcircle is not compact). cosh^2 r = (A - G)^2 / Delta (Circle_coefficients) and
-// cosh d(a, b) = (n_a n_b + 2 |a - b|^2) / (n_a n_b), n = 1 - |z|^2. Edge ab shorter than r iff
-// (n_a n_b + 2 |a-b|^2)^2 Delta < (A - G)^2 (n_a n_b)^2.
+// circumcircle is not compact). With the circle coefficients, sinh^2 r = (B^2 + C^2 - 4AG) / Delta, and
+// sinh^2 d(a, b) = 4 A_ab (1 + A_ab), A_ab = |a - b|^2 / (n_a n_b), n = 1 - |z|^2. Edge ab shorter than r iff
+// 4 |a-b|^2 (n_a n_b + |a-b|^2) Delta < (B^2 + C^2 - 4AG) (n_a n_b)^2. Written with sinh^2 (not cosh^2) so that
+// tiny triangles (Euclidean limit) do not suffer from the cancellation in cosh^2 - 1.
 struct Edge_shorter_than_circumradius_poly
 {
   template <class NT>
@@ -33,19 +34,19 @@ struct Edge_shorter_than_circumradius_poly
     const Circle_coefficients<NT> cc(px, py, qx, qy, rx, ry);
     const NT delta = cc.delta();
     if(CGAL::make_certain(CGAL::sign(delta)) != POSITIVE) return S(POSITIVE);
-    const NT c2 = cc.cosh2_numerator();
+    const NT s2 = cc.sinh2_numerator();
     const NT np = lift_n(px, py), nq = lift_n(qx, qy), nr = lift_n(rx, ry);
     auto shorter = [&](const NT& na, const NT& nb, const NT& d2) {
-      const NT nn = na * nb, c = nn + NT(2) * d2;
-      return CGAL::make_certain(CGAL::sign(c2 * nn * nn - c * c * delta));
+      const NT nn = na * nb;
+      return CGAL::make_certain(CGAL::sign(s2 * nn * nn - NT(4) * d2 * (nn + d2) * delta));
     };
     const Sign s1 = shorter(np, nq, squared_euclidean(px, py, qx, qy));
     if(s1 == POSITIVE) return S(POSITIVE);
-    const Sign s2 = shorter(nq, nr, squared_euclidean(qx, qy, rx, ry));
-    if(s2 == POSITIVE) return S(POSITIVE);
+    const Sign sb = shorter(nq, nr, squared_euclidean(qx, qy, rx, ry));
+    if(sb == POSITIVE) return S(POSITIVE);
     const Sign s3 = shorter(nr, np, squared_euclidean(rx, ry, px, py));
     if(s3 == POSITIVE) return S(POSITIVE);
-    return S((s1 == ZERO || s2 == ZERO || s3 == ZERO) ? ZERO : NEGATIVE);
+    return S((s1 == ZERO || sb == ZERO || s3 == ZERO) ? ZERO : NEGATIVE);
   }
 };
 
@@ -57,6 +58,31 @@ bool has_edge_shorter_than_circumradius(const Point_2& p, const Point_2& q, cons
   typedef typename Kernel_traits<Point_2>::Kernel::FT FT;
   return Poincare_disk_internal::Exact_evaluator<FT>::eval(Edge_shorter_than_circumradius_poly(), p.x(), p.y(),
                                                           q.x(), q.y(), r.x(), r.y()) == POSITIVE;
+}
+
+// Circumradius r > bound, with the bound given as sinh^2(bound): sign((B^2 + C^2 - 4AG) - s Delta); non-compact
+// circumcircles are larger. Same test as the traits' Compare_hyperbolic_circumradius_2 but on sinh^2, which has no
+// cancellation for tiny radii (cosh^2 r - cosh^2 bound does).
+struct Circumradius_larger_poly
+{
+  template <class NT>
+  auto operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry,
+                  const NT& sinh2_bound) const -> decltype(CGAL::sign(px))
+  {
+    typedef decltype(CGAL::sign(px)) S;
+    const Poincare_disk_internal::Circle_coefficients<NT> cc(px, py, qx, qy, rx, ry);
+    const NT delta = cc.delta();
+    if(CGAL::make_certain(CGAL::sign(delta)) != POSITIVE) return S(POSITIVE);
+    return CGAL::sign(cc.sinh2_numerator() - sinh2_bound * delta);
+  }
+};
+
+/// Exact (filtered): the hyperbolic circumradius of pqr is larger than the bound b given as sinh^2(b).
+template <class Point_2, class FT>
+bool circumradius_larger_than(const Point_2& p, const Point_2& q, const Point_2& r, const FT& sinh2_bound)
+{
+  return Poincare_disk_internal::Exact_evaluator<FT>::eval(Circumradius_larger_poly(), p.x(), p.y(), q.x(), q.y(),
+                                                          r.x(), r.y(), sinh2_bound) == POSITIVE;
 }
 
 /// Approximate cosh^2 of the hyperbolic circumradius (+infinity if the circumcircle is not compact), in double.
