@@ -118,7 +118,7 @@ int main(int argc, char** argv)
                 << " crossing_ms=" << crossing_ms << " path_ms=" << path_ms << " cgal_ms=" << cgal_ms
                 << " ratio_word_cgal=" << word_ms / cgal_ms << " ratio_crossing_cgal=" << crossing_ms / cgal_ms
                 << " geometric=" << res.used_geometry << " word_length=" << res.word.size()
-                << " raw_word_length=" << raw.size() << " same_as_dehn_of_input=" << (reduced == res.word)
+                << " raw_word_length=" << raw.size() << " dehn_of_input_length=" << reduced.size() << " same_as_dehn_of_input=" << (reduced == res.word)
                 << " cgal_agrees=" << same << " path_faces=" << faces_met << " path_length=" << path_len << std::endl;
     }
   }

@@ -166,14 +166,38 @@ public:
   /// a face containing both points, preferring `hint`; throws `Invalid_path_error` if there is none
   face_descriptor common_face(const Point& p, const Point& q, face_descriptor hint) const
   {
-    const std::vector<face_descriptor> fp = faces_of(p), fq = faces_of(q);
     face_descriptor found = GT::null_face();
-    for(face_descriptor f : fp)
-      for(face_descriptor g : fq)
-        if(f == g) {
-          if(f == hint) return f;
-          if(found == GT::null_face()) found = f;
-        }
+    auto consider = [&](face_descriptor f) {
+      if(f == hint) { found = f; return true; }
+      if(found == GT::null_face()) found = f;
+      return false;
+    };
+    if(p.on_vertex && q.on_vertex) {
+      if(p.v == q.v) {
+        for(halfedge_descriptor h : CGAL::halfedges_around_target(p.v, tm_)) if(consider(face(h, tm_))) break;
+      } else {
+        for(halfedge_descriptor h : CGAL::halfedges_around_source(p.v, tm_))
+          if(target(h, tm_) == q.v) {
+            if(consider(face(h, tm_))) break;
+            if(consider(face(opposite(h, tm_), tm_))) break;
+          }
+        // p and q may also be opposite corners' vertices of a face only through an edge: done above
+      }
+    } else if(p.on_vertex != q.on_vertex) {
+      const Point& v = p.on_vertex ? p : q;
+      const Point& e = p.on_vertex ? q : p;
+      const halfedge_descriptor hs[2] = {e.h, opposite(e.h, tm_)};
+      for(halfedge_descriptor h : hs)
+        if(source(h, tm_) == v.v || target(h, tm_) == v.v || target(next(h, tm_), tm_) == v.v)
+          if(consider(face(h, tm_))) break;
+    } else {
+      const face_descriptor fp[2] = {face(p.h, tm_), face(opposite(p.h, tm_), tm_)};
+      const face_descriptor fq[2] = {face(q.h, tm_), face(opposite(q.h, tm_), tm_)};
+      bool stop = false;
+      for(int i = 0; i < 2 && !stop; ++i)
+        for(int j = 0; j < 2 && !stop; ++j)
+          if(fp[i] == fq[j]) stop = consider(fp[i]);
+    }
     if(found == GT::null_face())
       throw Invalid_path_error("Surface_shortest_words: consecutive path points do not lie in a common face");
     return found;

@@ -227,7 +227,10 @@ public:
         Shortest_path_result<TriangleMesh> sp = shortest_loop_through_base(s_, loop, opt_.path_options);
         r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
       } catch(const Precision_error&) {
-        r.used_geometry = false; // too long for double precision: read the crossings of the input loop
+        // the shortest loop is too long for double precision: read the crossings of the input loop (exact;
+        // reading those of a representative made of geodesic pieces gave the same reduced words)
+        r.used_geometry = false;
+        r.loop = loop;
       }
     }
     if(r.loop.size() == 1) r.loop.push_back(r.loop.front());

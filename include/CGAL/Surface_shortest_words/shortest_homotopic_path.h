@@ -291,30 +291,13 @@ void rotate_to_direction(const Surface& s, Chart& chart, typename Surface::verte
 
 } // namespace internal
 
-/*!
-  \ingroup PkgSurfaceShortestWordsRef
-  Computes the shortest path homotopic to `path` with both end points fixed (thesis Algorithm 2).
+namespace internal {
 
-  The path is lifted to the universal cover (the hyperbolic plane, Poincare disk model) by a transient
-  embedding: only the face containing the current path point is laid out, unfolded across the next edge or
-  rotated around the next vertex, and the chart is re-centred at the current point after every step, so
-  memory is constant and time linear in the number of faces met. The lifted end point is then joined to
-  the start by the hyperbolic geodesic, which is traced through the faces it crosses, again embedding one
-  face at a time. The result is the unique geodesic in the homotopy class (the metric has no cone points).
-
-  \param surface the hyperbolic surface
-  \param path a path on it (consecutive points in a common face); the end points are kept
-  \param options numerical parameters and progress callback
-  \returns the shortest path (start point, its crossings with edges or vertices, end point) and its length.
-  \throws Invalid_path_error if `path` is not a path on the mesh
-  \throws Precision_error if the lifted end points are farther apart than `options.max_lift_distance`
-  Cost: O(n + m) time, O(1) extra memory for the embedding, n = faces met by `path`, m = faces crossed by
-  the result.
-*/
+// Algorithm 2 in one chart (the lifted path must stay within max_lift_distance of its start)
 template <class Surface>
 Shortest_path_result<typename Surface::Triangle_mesh>
-shortest_homotopic_path(const Surface& surface, const typename Surface::Path& path,
-                        const Shortest_path_options& options = Shortest_path_options())
+shortest_path_one_chart(const Surface& surface, const typename Surface::Path& path,
+                        const Shortest_path_options& options)
 {
   typedef typename Surface::Point Point;
   typedef typename Surface::face_descriptor face_descriptor;
@@ -343,9 +326,17 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
   chart.recentre(surface.position_in_face(path[0], chart.h0(), chart.z()));
   chart.reset_accumulated();
   std::size_t next_report = std::size_t(1) << 16;
+  const double max_alpha_beta = std::tanh(options.max_lift_distance / 2);
   for(halfedge_descriptor c : reducer.result()) {
     chart.unfold(c);
     chart.recentre(chart.z()[0]);
+    // the chart's origin must stay within max_lift_distance of the start (else rounding errors grow
+    // like e^distance): |Phi^-1(0)| = |beta| / |alpha|
+    const Isometry& phi = chart.accumulated();
+    const double a2 = phi.alpha_real() * phi.alpha_real() + phi.alpha_imag() * phi.alpha_imag();
+    const double b2 = phi.beta_real() * phi.beta_real() + phi.beta_imag() * phi.beta_imag();
+    if(!(b2 <= max_alpha_beta * max_alpha_beta * a2))
+      throw Precision_error("Surface_shortest_words: the lifted path leaves the double precision range (max_lift_distance)");
     if(options.progress && chart.count() >= next_report) { options.progress(chart.count()); next_report <<= 1; }
   }
   CGAL_assertion(chart.current_face() == f);
@@ -455,6 +446,122 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
   }
   res.embedded_faces = lifted + tr.count();
   return res;
+}
+
+// Geodesic pieces on a stack: the path is cut into short chunks, each shortened in one chart; a new piece
+// is merged with the top of the stack (shortened again as one path) while the merged geodesic is shorter
+// than `merge_length`, so backtracking and wandering cancel without any long lift.
+template <class Surface>
+std::vector<typename Surface::Path>
+geodesic_pieces(const Surface& surface, const typename Surface::Path& path, const Shortest_path_options& options,
+                double merge_length, std::size_t& faces)
+{
+  typedef typename Surface::Path Path;
+  std::vector<Path> stack;
+  std::vector<double> lengths;
+  auto concat = [](const Path& a, const Path& b) { Path r(a); r.insert(r.end(), b.begin() + 1, b.end()); return r; };
+  std::function<void(const Path&)> push_chunk = [&](const Path& chunk) {
+    Shortest_path_result<typename Surface::Triangle_mesh> piece;
+    try {
+      piece = shortest_path_one_chart(surface, chunk, options);
+    } catch(const Precision_error&) {
+      if(chunk.size() <= 2) throw;
+      const std::size_t mid = chunk.size() / 2;
+      push_chunk(Path(chunk.begin(), chunk.begin() + std::ptrdiff_t(mid) + 1));
+      push_chunk(Path(chunk.begin() + std::ptrdiff_t(mid), chunk.end()));
+      return;
+    }
+    faces += piece.embedded_faces;
+    Path cur = piece.path; double len = piece.length;
+    while(!stack.empty()) {
+      try {
+        Shortest_path_result<typename Surface::Triangle_mesh> m = shortest_path_one_chart(surface, concat(stack.back(), cur), options);
+        faces += m.embedded_faces;
+        if(m.length > merge_length) break;
+        cur = m.path; len = m.length;
+        stack.pop_back(); lengths.pop_back();
+      } catch(const Precision_error&) { break; }
+    }
+    stack.push_back(cur); lengths.push_back(len);
+  };
+  const std::size_t K = 256;
+  for(std::size_t i = 0; i + 1 < path.size(); i += K) {
+    const std::size_t e = (std::min)(path.size() - 1, i + K);
+    push_chunk(Path(path.begin() + std::ptrdiff_t(i), path.begin() + std::ptrdiff_t(e) + 1));
+  }
+  return stack;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgSurfaceShortestWordsRef
+  Computes the shortest path homotopic to `path` with both end points fixed (thesis Algorithm 2).
+
+  The path is lifted to the universal cover (the hyperbolic plane, Poincare disk model) by a transient
+  embedding: the sequence of faces it meets (crossed edges, turns around vertices) is first reduced exactly
+  (backtracks cancel, more than half a turn around a vertex becomes the shorter turn), then laid out one
+  face at a time, unfolded across the next edge, the chart re-centred after every step; memory is constant
+  and time linear in the number of faces met. The lifted end point is joined to the start by the hyperbolic
+  geodesic, traced through the faces it crosses, again embedding one face at a time. The result is the unique
+  geodesic in the homotopy class (the metric has no cone points).
+
+  Double precision keeps a lifted point accurate to about 1e-16 e^d at distance d: if the lifted path goes
+  farther than `options.max_lift_distance`, the path is cut into short chunks that are shortened separately
+  and merged on a stack (each merge is again a one-chart computation), which removes back-and-forth wandering;
+  if the final geodesic itself is longer than the limit, `Precision_error` is thrown.
+
+  \param surface the hyperbolic surface
+  \param path a path on it (consecutive points in a common face); the end points are kept
+  \param options numerical parameters and progress callback
+  \returns the shortest path (start point, its crossings with edges or vertices, end point) and its length.
+  \throws Invalid_path_error if `path` is not a path on the mesh
+  \throws Precision_error if the shortest path is longer than `options.max_lift_distance`
+  Cost: O(n + m) time, O(1) extra memory for the embedding, n = faces met by `path`, m = faces crossed by
+  the result (with the chunked fallback: O(n + m * max_lift_distance / edge length)).
+*/
+template <class Surface>
+Shortest_path_result<typename Surface::Triangle_mesh>
+shortest_homotopic_path(const Surface& surface, const typename Surface::Path& path,
+                        const Shortest_path_options& options = Shortest_path_options())
+{
+  try {
+    return internal::shortest_path_one_chart(surface, path, options);
+  } catch(const Precision_error&) {}
+  std::size_t faces = 0;
+  const std::vector<typename Surface::Path> pieces =
+    internal::geodesic_pieces(surface, path, options, 0.5 * options.max_lift_distance, faces);
+  if(pieces.size() == 1) {
+    Shortest_path_result<typename Surface::Triangle_mesh> r = internal::shortest_path_one_chart(surface, pieces.front(), options);
+    r.embedded_faces += faces;
+    return r;
+  }
+  std::ostringstream os;
+  os << "Surface_shortest_words: the shortest path is longer than max_lift_distance = " << options.max_lift_distance
+     << " (beyond double precision; it is approximated by " << pieces.size() << " geodesic pieces)";
+  throw Precision_error(os.str());
+}
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// A path homotopic to `path` (end points fixed) made of geodesic pieces, each shorter than
+/// `options.max_lift_distance` / 2 except where no merge was possible: the shortest path when it is short,
+/// otherwise a locally shortened representative (used by `Shortest_word_solver` for long loops).
+template <class Surface>
+typename Surface::Path
+shortened_homotopic_path(const Surface& surface, const typename Surface::Path& path,
+                         const Shortest_path_options& options = Shortest_path_options())
+{
+  surface.check_path(path);
+  if(path.size() < 2) return path;
+  try {
+    return internal::shortest_path_one_chart(surface, path, options).path;
+  } catch(const Precision_error&) {}
+  std::size_t faces = 0;
+  const std::vector<typename Surface::Path> pieces =
+    internal::geodesic_pieces(surface, path, options, 0.5 * options.max_lift_distance, faces);
+  typename Surface::Path r = pieces.front();
+  for(std::size_t i = 1; i < pieces.size(); ++i) r.insert(r.end(), pieces[i].begin() + 1, pieces[i].end());
+  return r;
 }
 
 /*!
