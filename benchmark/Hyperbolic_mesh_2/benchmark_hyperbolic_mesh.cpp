@@ -19,6 +19,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <limits>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -154,6 +156,36 @@ int main(int argc, char** argv)
       auto p = prm; p.off_centers(true);
       return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(alpha, eps), p);
     });
+  }
+
+  // ---------------------------------------------------------------- 3. angle only: circumcenters vs off-centers
+  Pslg cloud;
+  {
+    std::srand(11);
+    while(cloud.points.size() < 3000) {
+      const double x = 1.6 * std::rand() / RAND_MAX - 0.8, y = 1.6 * std::rand() / RAND_MAX - 0.8;
+      if(x * x + y * y < 0.64) cloud.points.push_back(Point(x, y));
+    }
+  }
+  for(double alpha_deg : {40.0, 50.0, 60.0, 66.0})
+  for(int input = 0; input < 2; ++input) {
+    const Pslg g = input == 0 ? octagon_with_hole(1.0) : cloud;
+    const double eps = input == 0 ? 0.05 : std::numeric_limits<double>::infinity();
+    for(int off = 0; off < 2; ++off) {
+      CDT cdt;
+      HM::insert_geodesic_pslg(cdt, g.points, g.segments);
+      HM::Mesh_statistics st;
+      const double t = seconds_of([&] {
+        st = CGAL::refine_hyperbolic_Ruppert_mesh_2(
+            cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(alpha_deg * PI / 180, eps),
+            HM::parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()).off_centers(off == 1).maximum_number_of_operations(2e6));
+      });
+      std::cout << "bench=off_centers input=" << (input == 0 ? "octagon_with_hole" : "cloud_3000") << " alpha_deg="
+                << alpha_deg << " eps=" << eps << " method=" << (off ? "Ruppert_off_centers" : "Ruppert")
+                << " vertices=" << st.final_vertices - st.frame_vertices << " off_centers=" << st.off_centers_inserted
+                << " min_central_angle_deg=" << st.minimum_central_angle * 180 / PI << " seconds=" << t
+                << " status=" << HM::to_string(st.status) << "\n";
+    }
   }
   return 0;
 }
