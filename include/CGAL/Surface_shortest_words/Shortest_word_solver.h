@@ -224,7 +224,9 @@ public:
     r.loop = loop;
     if(opt_.use_geometry && loop.size() > 1) {
       try {
-        Shortest_path_result<TriangleMesh> sp = shortest_loop_through_base(s_, loop, opt_.path_options);
+        // one chart only: the chunked fallback of shortest_homotopic_path() cannot give a single geodesic
+        // when this fails, and its pieces did not give shorter words
+        Shortest_path_result<TriangleMesh> sp = internal::shortest_path_one_chart(s_, loop, opt_.path_options);
         r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
       } catch(const Precision_error&) {
         // the shortest loop is too long for double precision: read the crossings of the input loop (exact;
