@@ -165,7 +165,7 @@ CGAL_HC_TEST_CASE(hessian_matches_finite_differences)
     for(auto v : m.vertices())
       eng.u[v] = sch == RF::Scheme::VERTEX_SCALING ? 0.1 * std::sin(double(v))
                  : RF::internal::u_from_radius(geo, 0.02 * (1.0 + 0.2 * std::sin(double(v))));
-    eng.compute_lengths(); eng.compute_curvature();
+    eng.compute_lengths(); eng.compute_angles(); eng.compute_curvature();
     std::vector<Eigen::Triplet<double> > trip;
     eng.hessian_triplets(trip);
     std::map<std::pair<int, int>, double> H;
@@ -174,8 +174,8 @@ CGAL_HC_TEST_CASE(hessian_matches_finite_differences)
     for(int j : {0, 17, 123}) {
       const double h = 1e-6;
       const double uj = eng.u[j];
-      eng.u[j] = uj + h; eng.compute_lengths(); eng.compute_curvature(); const std::vector<double> kp = eng.K;
-      eng.u[j] = uj - h; eng.compute_lengths(); eng.compute_curvature(); const std::vector<double> km = eng.K;
+      eng.u[j] = uj + h; eng.compute_lengths(); eng.compute_angles(); eng.compute_curvature(); const std::vector<double> kp = eng.K;
+      eng.u[j] = uj - h; eng.compute_lengths(); eng.compute_angles(); eng.compute_curvature(); const std::vector<double> km = eng.K;
       eng.u[j] = uj;
       for(std::size_t i = 0; i < kp.size(); ++i) {
         const double fd = (kp[i] - km[i]) / (2 * h);

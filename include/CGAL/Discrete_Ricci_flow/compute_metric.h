@@ -339,6 +339,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   std::vector<double> g(nv);
   auto evaluate = [&](double& max_err) -> bool {
     eng.compute_lengths();
+    eng.compute_angles();
     if(!eng.make_delaunay()) return false;
     eng.compute_curvature();
     max_err = 0;
@@ -417,7 +418,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
       t *= 0.5;
     }
     if(st.status == Flow_status::FLIP_LIMIT_REACHED) {
-      eng.u = u_old; eng.compute_lengths(); eng.compute_curvature(); g = g_old; err = err_old;
+      eng.u = u_old; eng.compute_lengths(); eng.compute_angles(); eng.compute_curvature(); g = g_old; err = err_old;
       break;
     }
     if(!accepted) {

@@ -44,6 +44,7 @@ public:
   // circle packings: inversive distance I of each edge.
   std::vector<double> edge_data;
   std::vector<double> u, target, len, K;
+  std::vector<double> angle; // per halfedge: the corner angle opposite to it in its face (cache)
   std::vector<char> v_is_border, e_is_border;
   std::size_t flips = 0, max_flips = 0;
   int pattern_version = 0;
@@ -61,6 +62,7 @@ public:
       e_is_border[e] = 1; v_is_border[m.vertex(e, 0)] = 1; v_is_border[m.vertex(e, 1)] = 1;
     }
     in_queue.assign(ne, 0);
+    angle.assign(m.number_of_halfedges(), 0.0);
     max_flips = 200 * ne + 1000;
   }
 
@@ -102,14 +104,25 @@ public:
     for(int i = 0; i < 3; ++i) { l[i] = len[m.edge(hs[i])]; cs[i] = m.target(hs[(i + 1) % 3]); }
   }
 
+  // recompute the cached angles of face f
+  void update_face_angles(F f)
+  {
+    H hs[3]; V cs[3]; double l[3], th[3];
+    face_data(m.halfedge(f), hs, cs, l);
+    triangle_angles_only(geo, l, th);
+    for(int i = 0; i < 3; ++i) angle[hs[i]] = th[i];
+  }
+
+  void compute_angles()
+  {
+    for(F f : m.faces()) update_face_angles(f);
+  }
+
   // ------------------------------------------------------------ intrinsic Delaunay flips
   // angle at the corner opposite to halfedge h, and the two angles at the ends of h, in face(h)
   void angles_at(H h, double& opposite, double& at_ends) const
   {
-    H hs[3]; V cs[3]; double l[3], th[3], dth[3][3];
-    face_data(h, hs, cs, l);
-    triangle_angles(geo, l, th, dth);
-    opposite = th[0]; at_ends = th[1] + th[2];
+    opposite = angle[h]; at_ends = angle[m.next(h)] + angle[m.prev(h)];
   }
 
   // edge ij is Delaunay iff a + a' <= b + c + b' + c' (a, a' the angles facing the edge; b, c, b', c' the other
@@ -147,6 +160,7 @@ public:
     m.set_face(o1, fh); m.set_face(h1, fo);
     m.set_halfedge(fh, h); m.set_halfedge(fo, o);
     len[e] = edge_length(e);
+    update_face_angles(fh); update_face_angles(fo);
     ++flips; ++pattern_version;
   }
 
@@ -172,13 +186,10 @@ public:
   // K_i = 2 pi - sum of angles (interior), pi - sum of angles (border: geodesic curvature)
   void compute_curvature()
   {
+    // uses the cached angles (compute_angles() or the flips keep them up to date)
     for(V v : m.vertices()) K[v] = v_is_border[v] ? CGAL_PI : 2 * CGAL_PI;
-    for(F f : m.faces()) {
-      H hs[3]; V cs[3]; double l[3], th[3], dth[3][3];
-      face_data(m.halfedge(f), hs, cs, l);
-      triangle_angles(geo, l, th, dth);
-      for(int i = 0; i < 3; ++i) K[cs[i]] -= th[i];
-    }
+    for(H h : m.halfedges())
+      if(!m.is_border(h)) K[m.target(m.next(h))] -= angle[h];
   }
 
   double total_area() const

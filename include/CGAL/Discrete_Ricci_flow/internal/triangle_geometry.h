@@ -73,6 +73,27 @@ inline bool triangle_angles(Background_geometry geo, const double l[3], double t
   return true;
 }
 
+/// The corner angles only (same conventions as `triangle_angles()`); false for a degenerate triangle.
+inline bool triangle_angles_only(Background_geometry geo, const double l[3], double theta[3])
+{
+  for(int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    if(!(l[i] < l[j] + l[k])) { theta[i] = CGAL_PI; theta[j] = 0; theta[k] = 0; return false; }
+  }
+  if(geo == Background_geometry::SPHERICAL && !(l[0] + l[1] + l[2] < 2 * CGAL_PI)) {
+    theta[0] = theta[1] = theta[2] = CGAL_PI;
+    return false;
+  }
+  const double s = 0.5 * (l[0] + l[1] + l[2]);
+  double fs = length_sine(geo, s), f[3];
+  for(int i = 0; i < 3; ++i) f[i] = length_sine(geo, s - l[i]);
+  for(int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    theta[i] = 2 * std::atan2(std::sqrt(f[j] * f[k]), std::sqrt(fs * f[i]));
+  }
+  return true;
+}
+
 /// Area of a triangle with lengths l (E2: Heron; H2 and S2: the angle excess |pi - sum of angles|).
 inline double triangle_area(Background_geometry geo, const double l[3], const double theta[3])
 {
