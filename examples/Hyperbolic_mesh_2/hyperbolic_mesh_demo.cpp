@@ -91,6 +91,8 @@ int main(int argc, char** argv)
       std::cout << "Ruppert: " << st << "\n";
       HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Ruppert.svg", criteria.alpha(), 2 * pi / 3,
                                     "generalized Ruppert, alpha = 35 deg, eps = " + std::to_string(eps));
+      HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Ruppert_corner_zoom.svg", criteria.alpha(), 2 * pi / 3,
+                                    "zoom x6 on the lopped 5 degree corner", 800, 6.0, 0.25, -0.2);
       HM::write_central_angle_histogram_svg(cdt, "hyperbolic_mesh_Ruppert_histogram.svg", {35.0},
                                             "Ruppert: central angles of the shortest edges");
     }
