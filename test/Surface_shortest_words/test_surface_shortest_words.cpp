@@ -428,25 +428,38 @@ CGAL_HC_TEST_CASE(bad_paths_throw)
 
 CGAL_HC_TEST_CASE(greedy_basis_words_cgal_oracle)
 {
-  RPS S(2, 4);
-  Surface s(S.mesh, S.length);
-  Solver solver(s, S.base); // computed greedy homotopy basis
-  CGAL_HC_CHECK(!solver.is_canonical());
-  CGAL_HC_CHECK(solver.relator().size() == 8);
-  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
-  CGAL_HC_CHECK(cst.is_contractible(pos(S.mesh, solver.realize(solver.relator()))));
-  for(int i = 0; i < 4; ++i) {
-    CGAL_HC_CHECK(!cst.is_contractible(pos(S.mesh, solver.generator(std::size_t(i)))));
-    CGAL_HC_CHECK(solver.word(vertex_path(s, solver.generator(std::size_t(i)))) == SSW::Word{i + 1});
-  }
-  std::mt19937 rng(77);
-  for(std::size_t len : {10, 100, 1000, 10000}) {
-    for(int trial = 0; trial < 3; ++trial) {
-      const auto hs = random_loop(S.mesh, S.base, len, rng);
-      const SSW::Word w = solver.word(vertex_path(s, hs));
-      CGAL_HC_CHECK_MSG(w.empty() ? cst.is_contractible(pos(S.mesh, hs))
-                                  : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(w))),
-                        "length " << len << " word " << solver.word_to_string(w));
+  for(int g : {2, 3}) {
+    for(bool canonical : {false, true}) {
+      RPS S(g, 4);
+      Surface s(S.mesh, S.length);
+      SSW::Shortest_word_options opt;
+      opt.make_canonical = canonical;
+      Solver solver(s, S.base, opt); // computed greedy homotopy basis (made canonical or not)
+      CGAL_HC_CHECK(solver.is_canonical() == canonical);
+      CGAL_HC_CHECK(solver.relator().size() == std::size_t(4 * g));
+      if(canonical) {
+        SSW::Word can;
+        for(int i = 0; i < g; ++i) { can.push_back(2 * i + 1); can.push_back(2 * i + 2); can.push_back(-(2 * i + 1)); can.push_back(-(2 * i + 2)); }
+        CGAL_HC_CHECK(solver.relator() == can);
+      }
+      CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+      // the relator of the (computed) generators is contractible, the generators are not
+      CGAL_HC_CHECK(cst.is_contractible(pos(S.mesh, solver.realize(solver.relator()))));
+      for(int i = 0; i < 2 * g; ++i) {
+        CGAL_HC_CHECK(!cst.is_contractible(pos(S.mesh, solver.generator(std::size_t(i)))));
+        const SSW::Word w = solver.word(vertex_path(s, solver.generator(std::size_t(i))));
+        CGAL_HC_CHECK_MSG(w == SSW::Word{i + 1}, solver.word_to_string(w));
+      }
+      std::mt19937 rng(77 + g);
+      for(std::size_t len : {10, 100, 1000, 10000}) {
+        for(int trial = 0; trial < 2; ++trial) {
+          const auto hs = random_loop(S.mesh, S.base, len, rng);
+          const SSW::Word w = solver.word(vertex_path(s, hs));
+          CGAL_HC_CHECK_MSG(w.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                      : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(w))),
+                            "genus " << g << " length " << len << " word " << solver.word_to_string(w));
+        }
+      }
     }
   }
 }
@@ -477,9 +490,15 @@ CGAL_HC_TEST_CASE(ricci_flow_meshes_translation_lengths_and_words)
                         name << " loop " << i << ": " << r.length << " vs " << emb.translation_length(i));
       CGAL_HC_CHECK(r.length <= s.path_length(loop) + 1e-9);
     }
-    // words in the computed basis, checked with CGAL's oracle on the intrinsic triangulation
+    // words in the computed basis made canonical, checked with CGAL's oracle on the intrinsic triangulation
     ISolver solver(s, emb.base_vertex());
+    CGAL_HC_CHECK(solver.is_canonical());
     CGAL::Surface_mesh_topology::Curves_on_surface_topology<IMesh> cst(m);
+    {
+      CGAL::Surface_mesh_topology::Path_on_surface<IMesh> rel(m);
+      for(auto h : solver.realize(solver.relator())) rel.push_back(h);
+      CGAL_HC_CHECK(cst.is_contractible(rel));
+    }
     std::mt19937 rng(3);
     for(std::size_t len : {10, 100, 1000, 10000}) {
       for(int trial = 0; trial < 2; ++trial) {

@@ -68,6 +68,8 @@ struct Shortest_word_options
   bool use_geometry = true;
   /// shorten the generators at construction (their lengths and paths are then available)
   bool shorten_generators = true;
+  /// for the computed (greedy) basis: turn it into a canonical system by cut and paste on its relator
+  bool make_canonical = true;
   /// parameters of the shortest path computations
   Shortest_path_options path_options;
 };
@@ -153,9 +155,12 @@ public:
     shortest paths from `base` for the hyperbolic edge lengths, a maximum spanning tree of the dual graph
     for the lengths of the loops of the remaining edges, and the 2g loops of the edges in neither tree).
     The loops x1, ..., x_{2g} (tree path, edge, tree path back) generate pi_1(S, p); their relator (read
-    around the cut disk) is in general not the canonical one, and `is_canonical()` is false: words are
-    then words in x1, ..., x_{2g}, Dehn-reduced for that relator (not guaranteed shortest). Making the
-    basis canonical (cut and paste) is not implemented.
+    around the cut disk) is in general not the canonical one. With `options.make_canonical` (default) the
+    classical cut and paste (Nielsen substitutions on the relator) gives a canonical system a1, b1, ...,
+    ag, bg as words in the x's, realized as edge loops by concatenation (they are not simple, not
+    disjoint and not shortest, so the words are exact but shortness is not guaranteed); the crossings are
+    still read with the cut graph of the x's and the words rewritten in the a's and b's. Without it,
+    `is_canonical()` is false and words are in x1, ..., x_{2g}, Dehn-reduced for their relator.
     Cost: O(n log n) for a mesh of size n.
   */
   Shortest_word_solver(const Surface& surface, vertex_descriptor base,
@@ -167,6 +172,22 @@ public:
     std::unordered_map<halfedge_descriptor, int> labels;
     halfedge_descriptor first = greedy_basis(labels);
     build_cut_system(labels, first);
+    if(opt_.make_canonical) {
+      try {
+        const internal::Canonical_change change = internal::make_canonical(cut_relator_);
+        gens_.clear();
+        for(const Word& w : change.new_in_old) gens_.push_back(realize_with(cut_gens_, w));
+        x_to_gen_ = change.old_in_new;
+        relator_.clear();
+        for(int i = 0; i < g_; ++i) {
+          relator_.push_back(2 * i + 1); relator_.push_back(2 * i + 2);
+          relator_.push_back(-(2 * i + 1)); relator_.push_back(-(2 * i + 2));
+        }
+        canonical_ = true;
+      } catch(const std::invalid_argument& e) {
+        throw Invalid_generators_error(std::string("Shortest_word_solver: cannot make the greedy basis canonical: ") + e.what());
+      }
+    }
     shorten();
   }
 
@@ -243,16 +264,7 @@ public:
 
   /// the word realized as an edge loop: the concatenation of the generator loops (inverse letters
   /// traversed backwards)
-  std::vector<halfedge_descriptor> realize(const Word& w) const
-  {
-    std::vector<halfedge_descriptor> r;
-    for(int l : w) {
-      const std::vector<halfedge_descriptor>& g = gens_.at(std::size_t(std::abs(l) - 1));
-      if(l > 0) r.insert(r.end(), g.begin(), g.end());
-      else for(auto it = g.rbegin(); it != g.rend(); ++it) r.push_back(opposite(*it, tm_));
-    }
-    return r;
-  }
+  std::vector<halfedge_descriptor> realize(const Word& w) const { return realize_with(gens_, w); }
 
   /// the raw word read from the crossings of a loop based at p with the generators (no geometry, no
   /// reduction): exact and linear in the loop size
@@ -266,7 +278,25 @@ public:
       cur = f;
     }
     move(loop.back(), cur, base_face_, w);
-    return internal::free_reduce(w);
+    w = internal::free_reduce(w);
+    if(!x_to_gen_.empty()) w = internal::substitute(internal::dehn_reduce(w, cut_relator_), x_to_gen_);
+    return w;
+  }
+
+private:
+  // concatenation of loops (inverse letters traversed backwards), immediate backtracks removed
+  std::vector<halfedge_descriptor> realize_with(const std::vector<std::vector<halfedge_descriptor> >& loops, const Word& w) const
+  {
+    std::vector<halfedge_descriptor> r;
+    auto push = [&](halfedge_descriptor h) {
+      if(!r.empty() && r.back() == opposite(h, tm_)) r.pop_back(); else r.push_back(h);
+    };
+    for(int l : w) {
+      const std::vector<halfedge_descriptor>& g = loops.at(std::size_t(std::abs(l) - 1));
+      if(l > 0) for(halfedge_descriptor h : g) push(h);
+      else for(auto it = g.rbegin(); it != g.rend(); ++it) push(opposite(*it, tm_));
+    }
+    return r;
   }
 
 private:
@@ -355,14 +385,14 @@ private:
   {
     std::unordered_map<halfedge_descriptor, std::size_t> pos;
     std::vector<std::size_t> count(1, 0); // count[k] = c_k
-    relator_.clear();
+    cut_relator_.clear();
     halfedge_descriptor beta = first;
     const std::size_t n = labels.size();
     for(std::size_t k = 1; k <= n; ++k) {
       if(!pos.emplace(beta, k).second) break;
       const int l = labels.at(beta);
-      if(l != 0) relator_.push_back(l);
-      count.push_back(relator_.size());
+      if(l != 0) cut_relator_.push_back(l);
+      count.push_back(cut_relator_.size());
       // next: the first halfedge of G clockwise from opposite(beta) around target(beta)
       const halfedge_descriptor back = opposite(beta, tm_);
       halfedge_descriptor o = back;
@@ -371,16 +401,16 @@ private:
     }
     if(pos.size() != n || beta != first)
       throw Invalid_generators_error("Shortest_word_solver: the loops do not cut the surface into one disk (boundary word " +
-                                     to_string(relator_) + ")");
-    if(relator_.size() != 4 * std::size_t(g_))
-      throw Invalid_generators_error("Shortest_word_solver: the cut disk has " + std::to_string(relator_.size()) +
+                                     to_string(cut_relator_) + ")");
+    if(cut_relator_.size() != 4 * std::size_t(g_))
+      throw Invalid_generators_error("Shortest_word_solver: the cut disk has " + std::to_string(cut_relator_.size()) +
                                      " labelled sides instead of 4g");
-    const std::size_t m = relator_.size() + 1;
+    const std::size_t m = cut_relator_.size() + 1;
     side_words_.assign(m * m, Word());
     for(std::size_t a = 0; a < m; ++a)
       for(std::size_t b = 0; b < m; ++b) {
-        Word w(relator_.begin(), relator_.begin() + std::ptrdiff_t(a));
-        internal::append_reduced(w, internal::inverse(Word(relator_.begin(), relator_.begin() + std::ptrdiff_t(b))));
+        Word w(cut_relator_.begin(), cut_relator_.begin() + std::ptrdiff_t(a));
+        internal::append_reduced(w, internal::inverse(Word(cut_relator_.begin(), cut_relator_.begin() + std::ptrdiff_t(b))));
         side_words_[a * m + b] = w;
       }
     exit_side_.clear();
@@ -390,6 +420,9 @@ private:
       if(a != b) exit_side_[hp.first] = int(a * m + b); // a == b: the trivial element
     }
     base_face_ = face(first, tm_);
+    relator_ = cut_relator_;
+    cut_gens_ = gens_;
+    x_to_gen_.clear();
   }
 
   // greedy homotopy basis (Erickson-Whittlesey); fills the labels of the cut graph and the generator loops
@@ -470,7 +503,10 @@ private:
   std::vector<std::vector<halfedge_descriptor> > gens_;
   Shortest_word_options opt_;
   int g_ = 0;
-  Word relator_;
+  Word relator_;      // relator of the generators (canonical when canonical_)
+  Word cut_relator_;  // relator of the cut system the crossings are read with
+  std::vector<std::vector<halfedge_descriptor> > cut_gens_;
+  std::vector<Word> x_to_gen_; // cut-system letters as words in the generators (empty: identical)
   std::vector<Word> side_words_;
   std::unordered_map<halfedge_descriptor, int> exit_side_;
   bool canonical_ = true;
