@@ -105,6 +105,7 @@ public:
       const auto& p = fh->vertex(0)->point();
       const auto& r = fh->vertex(1)->point();
       const auto& s = fh->vertex(2)->point();
+      check_not_collapsed(p, r, s);
       approximate(p, r, s, q);
       if(radius_ > 0 && gt_.compare_hyperbolic_circumradius_2_object()(p, r, s, FT(cosh2_)) == LARGER)
         q.badness = Mesh_2::IMPERATIVELY_BAD;
@@ -116,6 +117,23 @@ public:
     }
 
   private:
+    // CGAL's Mesh_2 handles small input angles with Euclidean concentric shells; in H^2 it can refine towards a
+    // vertex without end. Stop with an exception long before the points collide in floating point.
+    template <class P>
+    static void check_not_collapsed(const P& p, const P& r, const P& s)
+    {
+      const double e = 1.0 / (1 << 18) / (1 << 18); // 2^-36 ~ 1.5e-11
+      auto d2 = [](const P& a, const P& b) {
+        const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x()), dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
+        return dx * dx + dy * dy;
+      };
+      if(d2(p, r) < e * e || d2(r, s) < e * e || d2(s, p) < e * e)
+        throw std::runtime_error("Poincare_disk_mesh_criteria_2: the refinement by CGAL's refine_Delaunay_mesh_2 "
+                                 "collapsed (an edge shorter than 1.5e-11), typically at an input angle below 60 "
+                                 "degrees: Mesh_2's cluster handling is Euclidean. Use Hyperbolic_mesh_2's refiners "
+                                 "(corner lopping) for such input.");
+    }
+
     template <class P>
     void approximate(const P& p, const P& r, const P& s, Quality& q) const
     {

@@ -830,6 +830,99 @@ public:
     }
   };
 
+  // ---------------------------------------------------------------- vectors: the exponential map
+  // A vector at a point a is a tangent vector in Poincare coordinates scaled to hyperbolic length:
+  // `Construct_vector_2(a, b)` = log_a(b) has the direction of the geodesic from a to b at a and length d(a, b);
+  // `Construct_translated_point_2(a, v)` = exp_a(v) is the point at distance |v| from a on the geodesic leaving
+  // a in direction v. Hence translate(a, s * vector(a, b)) is the point of the geodesic ray from a through b at
+  // distance s d(a, b), and vector(a, midpoint(a, b)) * 2 = vector(a, b): CGAL's Mesh_2 relies on both when it
+  // splits constrained edges near small input angles. Both are rounded (they need atanh / tanh).
+
+  /// log_a(b) for two points; the kernel's constructions for the other argument lists.
+  class Construct_vector_2
+  {
+  public:
+    typedef Vector_2 result_type;
+    Vector_2 operator()(const Point_2& a, const Point_2& b) const
+    {
+      check(a, "Construct_vector_2"); check(b, "Construct_vector_2");
+      typedef Simple_cartesian<double>::Point_2 P;
+      typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
+      const P ad(CGAL::to_double(a.x()), CGAL::to_double(a.y()));
+      // the translation taking a to 0 has a positive real derivative at a: directions are kept
+      const P b0 = Iso::translation_to_origin(ad).apply_unchecked(P(CGAL::to_double(b.x()), CGAL::to_double(b.y())));
+      const double r = std::hypot(b0.x(), b0.y());
+      if(r == 0) return Vector_2(FT(0), FT(0));
+      const double f = 2 * std::atanh((std::min)(r, 1.0 - 1e-16)) / r;
+      return Vector_2(FT(f * b0.x()), FT(f * b0.y()));
+    }
+    template <class... Args>
+    Vector_2 operator()(const Args&... args) const { return typename Kernel::Construct_vector_2()(args...); }
+  };
+
+  /// exp_a(v); throws `Poincare_disk_domain_error` if the result rounds onto the unit circle (|v| > ~37).
+  class Construct_translated_point_2
+  {
+  public:
+    typedef Point_2 result_type;
+    Point_2 operator()(const Point_2& a, const Vector_2& v) const
+    {
+      check(a, "Construct_translated_point_2");
+      typedef Simple_cartesian<double>::Point_2 P;
+      typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
+      const double vx = CGAL::to_double(v.x()), vy = CGAL::to_double(v.y()), len = std::hypot(vx, vy);
+      if(len == 0) return a;
+      const double f = std::tanh(len / 2) / len;
+      const P ad(CGAL::to_double(a.x()), CGAL::to_double(a.y()));
+      const P r = Iso::translation_from_origin(ad).apply_unchecked(P(f * vx, f * vy));
+      const Point_2 res(FT(r.x()), FT(r.y()));
+      Poincare_disk_internal::check_point_in_disk(res, "Construct_translated_point_2 (result)");
+      return res;
+    }
+  };
+
+  typedef typename Kernel::Construct_scaled_vector_2      Construct_scaled_vector_2;
+
+  /// For two points: 4 sinh^2(d(p, q) / 2) = 4 |p - q|^2 / ((1 - |p|^2)(1 - |q|^2)) = 2 (cosh d - 1), the squared
+  /// Minkowski chord between the hyperboloid lifts: exact (rational), increasing in the hyperbolic distance d, and
+  /// d^2 + O(d^4) for short edges, so CGAL's Mesh_2 can compare and scale edge lengths with it.
+  /// Other argument lists (e.g. a line and a point, used by the constrained triangulation's fallback when an
+  /// intersection cannot be constructed) are the kernel's Euclidean squared distances in Poincare coordinates.
+  class Compute_squared_distance_2
+  {
+  public:
+    typedef FT result_type;
+    FT operator()(const Point_2& p, const Point_2& q) const
+    {
+      check(p, "Compute_squared_distance_2"); check(q, "Compute_squared_distance_2");
+      using namespace Poincare_disk_internal;
+      return FT(4) * squared_euclidean(p.x(), p.y(), q.x(), q.y()) / (lift_n(p.x(), p.y()) * lift_n(q.x(), q.y()));
+    }
+    template <class A, class B>
+    FT operator()(const A& a, const B& b) const { return typename Kernel::Compute_squared_distance_2()(a, b); }
+  };
+
+  /// Signed hyperbolic area of the geodesic triangle pqr (positive iff LEFT_TURN), rounded:
+  /// tan(area / 2) = det[L(p), L(q), L(r)] / (1 + cosh d(p,q) + cosh d(q,r) + cosh d(r,p)), L the hyperboloid lift
+  /// (the numerator and denominator are rational). With `Compute_squared_distance_2`, CGAL's Euclidean criteria
+  /// classes (`Delaunay_mesh_size_criteria_2`) then measure shape and size hyperbolically for small triangles.
+  class Compute_area_2
+  {
+  public:
+    typedef FT result_type;
+    FT operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
+    {
+      check(p, "Compute_area_2"); check(q, "Compute_area_2"); check(r, "Compute_area_2");
+      using namespace Poincare_disk_internal;
+      const FT np = lift_n(p.x(), p.y()), nq = lift_n(q.x(), q.y()), nr = lift_n(r.x(), r.y());
+      const FT det = FT(4) * klein_orientation_det(p.x(), p.y(), q.x(), q.y(), r.x(), r.y()) / (np * nq * nr);
+      const FT den = FT(4) + FT(2) * (squared_euclidean(p.x(), p.y(), q.x(), q.y()) / (np * nq) +
+                                      squared_euclidean(q.x(), q.y(), r.x(), r.y()) / (nq * nr) +
+                                      squared_euclidean(r.x(), r.y(), p.x(), p.y()) / (nr * np));
+      return FT(2 * std::atan2(CGAL::to_double(det), CGAL::to_double(den)));
+    }
+  };
+
   // ---------------------------------------------------------------- Euclidean functors required by the concepts
   // Combinatorial helpers of the triangulations (no hyperbolic meaning; documented as Euclidean):
   typedef typename Kernel::Construct_segment_2            Construct_segment_2;
@@ -839,12 +932,7 @@ public:
   typedef typename Kernel::Construct_line_2               Construct_line_2;
   typedef typename Kernel::Construct_ray_2                Construct_ray_2;
   typedef typename Kernel::Construct_direction_2          Construct_direction_2;
-  typedef typename Kernel::Construct_vector_2             Construct_vector_2;
-  typedef typename Kernel::Construct_scaled_vector_2      Construct_scaled_vector_2;
-  typedef typename Kernel::Construct_translated_point_2   Construct_translated_point_2;
   typedef typename Kernel::Construct_bisector_2           Construct_bisector_2;  ///< Euclidean (DT2's dim-1 dual)
-  typedef typename Kernel::Compute_squared_distance_2     Compute_squared_distance_2; ///< Euclidean (CDT heuristics)
-  typedef typename Kernel::Compute_area_2                 Compute_area_2;          ///< Euclidean
   typedef typename Kernel::Equal_2                        Equal_2;
   typedef typename Kernel::Has_on_bounded_side_2          Has_on_bounded_side_2;
 
@@ -908,14 +996,12 @@ public:
   Construct_line_2 construct_line_2_object() const { return kernel_.construct_line_2_object(); }
   Construct_ray_2 construct_ray_2_object() const { return kernel_.construct_ray_2_object(); }
   Construct_direction_2 construct_direction_2_object() const { return kernel_.construct_direction_2_object(); }
-  Construct_vector_2 construct_vector_2_object() const { return kernel_.construct_vector_2_object(); }
+  Construct_vector_2 construct_vector_2_object() const { return Construct_vector_2(); }
   Construct_scaled_vector_2 construct_scaled_vector_2_object() const { return kernel_.construct_scaled_vector_2_object(); }
-  Construct_translated_point_2 construct_translated_point_2_object() const
-  { return kernel_.construct_translated_point_2_object(); }
+  Construct_translated_point_2 construct_translated_point_2_object() const { return Construct_translated_point_2(); }
   Construct_bisector_2 construct_bisector_2_object() const { return kernel_.construct_bisector_2_object(); }
-  Compute_squared_distance_2 compute_squared_distance_2_object() const
-  { return kernel_.compute_squared_distance_2_object(); }
-  Compute_area_2 compute_area_2_object() const { return kernel_.compute_area_2_object(); }
+  Compute_squared_distance_2 compute_squared_distance_2_object() const { return Compute_squared_distance_2(); }
+  Compute_area_2 compute_area_2_object() const { return Compute_area_2(); }
   Equal_2 equal_2_object() const { return kernel_.equal_2_object(); }
   Has_on_bounded_side_2 has_on_bounded_side_2_object() const { return kernel_.has_on_bounded_side_2_object(); }
 
