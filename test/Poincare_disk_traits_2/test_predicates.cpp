@@ -85,12 +85,8 @@ void check_predicates(const std::vector<Tp<K> >& pts, const std::string& set_nam
       int ind = -1;
       const bool h = tr.is_Delaunay_hyperbolic_2_object()(P.p, Qp.p, R.p, ind);
       CGAL_HC_CHECK_MSG(!h, where);
-      // TODO(BUGS-traits.md T1): the traits round non-double coordinates to double here; exact on Epick input.
-      if(expected >= 0 && std::is_same<FT, double>::value)
-        CGAL_HC_CHECK_MSG(ind == expected, where << " ind=" << ind << " expected " << expected);
-      else if(expected >= 0)
-        PD_KNOWN_BUG_CHECK("T1", ind == expected, where << " ind=" << ind << " expected " << expected << " exact: " << p.x << " "
-                          << p.y << " " << q.x << " " << q.y << " " << r.x << " " << r.y);
+      // (bug T1 of BUGS-traits.md, fixed: the index used to be computed from coordinates rounded to double)
+      if(expected >= 0) CGAL_HC_CHECK_MSG(ind == expected, where << " ind=" << ind << " expected " << expected);
     }
 
     // encroachment (and the mesher's Angle_2)
