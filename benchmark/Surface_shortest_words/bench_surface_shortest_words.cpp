@@ -9,6 +9,7 @@
 // crossing_ms: the exact crossing word + Dehn reduction of the input loop (no geometry);
 // path_ms:     shortest_homotopic_path on a path of the same number of edges that walks out and back (its
 //              lift stays within reach of double precision: measures the linear lifting and tracing);
+// free_loop_ms: shortest_homotopic_loop (Algorithm 3) on the loop, when its shortest loop fits in one chart;
 // cgal_ms:     CGAL Curves_on_surface_topology::are_base_point_homotopic(loop, word realized on the
 //              generators) in the same run (the quadrangulation is built once per mesh, cgal_build_ms).
 // Usage: bench_surface_shortest_words [max_faces = 1000000] [max_loop_edges = 1000000]
@@ -108,6 +109,14 @@ int main(int argc, char** argv)
       } catch(const SSW::Precision_error&) {}
       const double path_ms = ms_since(t0);
 
+      // Algorithm 3 (free shortest loop) when the loop is short enough for one chart
+      double loop_ms = -1, loop_length = -1; std::size_t loop_iterations = 0;
+      if(res.used_geometry && !res.word.empty()) {
+        t0 = std::chrono::steady_clock::now();
+        const auto fl = SSW::shortest_homotopic_loop(surface, loop);
+        loop_ms = ms_since(t0); loop_length = fl.length; loop_iterations = fl.iterations;
+      }
+
       Path_on_surface p1(S.mesh), p2(S.mesh);
       for(auto h : hs) p1.push_back(h);
       for(auto h : solver.realize(res.word)) p2.push_back(h);
@@ -119,7 +128,8 @@ int main(int argc, char** argv)
                 << " ratio_word_cgal=" << word_ms / cgal_ms << " ratio_crossing_cgal=" << crossing_ms / cgal_ms
                 << " geometric=" << res.used_geometry << " word_length=" << res.word.size()
                 << " raw_word_length=" << raw.size() << " dehn_of_input_length=" << reduced.size() << " same_as_dehn_of_input=" << (reduced == res.word)
-                << " cgal_agrees=" << same << " path_faces=" << faces_met << " path_length=" << path_len << std::endl;
+                << " cgal_agrees=" << same << " path_faces=" << faces_met << " path_length=" << path_len
+                << " free_loop_ms=" << loop_ms << " free_loop_length=" << loop_length << " free_loop_iterations=" << loop_iterations << std::endl;
     }
   }
   return EXIT_SUCCESS;

@@ -9,6 +9,10 @@
 #include <CGAL/Surface_shortest_words.h>
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
+#if __has_include(<CGAL/Discrete_Ricci_flow.h>)
+#include <CGAL/Discrete_Ricci_flow.h>
+#define SSW_DEMO_RICCI_FLOW 1
+#endif
 
 #include <cstdlib>
 #include <iostream>
@@ -130,6 +134,45 @@ int main(int argc, char** argv)
     svg.add_text(20, 75, "a1 (red), b1 (blue), a2 (green), b2 (purple); grey: lifts of the fundamental octagon", 14);
     svg.write("surface_shortest_words_demo.svg");
     std::cout << "wrote surface_shortest_words_demo.svg\n";
+
+#ifdef SSW_DEMO_RICCI_FLOW
+    // CGAL's eight.off with the hyperbolic metric of the Ricci flow and a computed canonical system
+    {
+      typedef CGAL::Ricci_flow::Discrete_metric<CGAL::Epick::Point_3> Metric;
+      typedef Metric::Mesh IMesh;
+      IMesh input;
+      const std::string file = std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/eight.off";
+      if(!CGAL::IO::read_polygon_mesh(file, input)) throw std::runtime_error("cannot read " + file);
+      const Metric metric = CGAL::Ricci_flow::hyperbolic_uniformization(input);
+      const IMesh& m = metric.intrinsic_mesh();
+      SSW::Hyperbolic_surface<IMesh, Metric::Edge_length_map> s8(m, metric.edge_length_map());
+      const IMesh::Vertex_index p8(0);
+      SSW::Shortest_word_solver<IMesh, Metric::Edge_length_map> solver8(s8, p8);
+      std::cout << "\neight.off (" << num_faces(m) << " faces, Ricci flow metric, max |angle sum - 2pi| = "
+                << s8.max_angle_defect() << "): computed canonical system, generator lengths";
+      for(int i = 0; i < 4; ++i) std::cout << " " << solver8.shortened_generator_length(std::size_t(i));
+      std::cout << "\n";
+      std::vector<IMesh::Halfedge_index> walk;
+      IMesh::Vertex_index u = p8;
+      for(std::size_t i = 0; i < 100; ++i) {
+        std::vector<IMesh::Halfedge_index> out;
+        for(auto h : CGAL::halfedges_around_source(u, m)) out.push_back(h);
+        walk.push_back(out[rng() % out.size()]);
+        u = m.target(walk.back());
+      }
+      std::map<IMesh::Vertex_index, IMesh::Halfedge_index> par;
+      std::queue<IMesh::Vertex_index> qq; qq.push(p8); par[p8] = IMesh::null_halfedge();
+      while(!qq.empty()) {
+        auto x = qq.front(); qq.pop();
+        for(auto h : CGAL::halfedges_around_source(x, m))
+          if(!par.count(m.target(h))) { par[m.target(h)] = h; qq.push(m.target(h)); }
+      }
+      while(u != p8) { auto h = par[u]; walk.push_back(m.opposite(h)); u = m.source(h); }
+      const auto r8 = solver8.solve(s8.path_from_halfedges(walk));
+      std::cout << "random loop of " << walk.size() << " edges: shortest loop through p " << r8.length
+                << ", word " << solver8.word_to_string(r8.word) << "\n";
+    }
+#endif
   } catch(const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return EXIT_FAILURE;

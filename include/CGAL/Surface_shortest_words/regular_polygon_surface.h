@@ -36,7 +36,7 @@ namespace Surface_shortest_words {
   representation used by the tests (`rho_generator(2i)` = rho(a_{i+1}), `rho_generator(2i+1)` = rho(b_{i+1});
   the lift of p at V_0 is the base of the lifts).
 
-  The mesh has 4g m^2 faces, 2g m^2 + 1 - ... vertices; `m >= 3` is required (for a simplicial mesh).
+  The mesh has 4g m^2 faces; `m >= 3` is required (for a simplicial mesh). Cost: O(g m^2 log(g m^2)).
 */
 class Regular_polygon_surface
 {
