@@ -33,6 +33,7 @@ static double one_factorization_seconds(const RF::Discrete_metric<Point_3>& metr
   RF::internal::Flow_engine<Point_3> eng(m, RF::Background_geometry::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, false);
   for(auto e : m.edges()) eng.edge_data[e] = std::sinh(0.5 * metric.length(e)); // u = 0 gives the final lengths
   eng.compute_lengths();
+  eng.compute_angles();
   std::vector<Eigen::Triplet<double> > trip;
   eng.hessian_triplets(trip);
   Eigen::SparseMatrix<double> H(int(m.number_of_vertices()), int(m.number_of_vertices()));

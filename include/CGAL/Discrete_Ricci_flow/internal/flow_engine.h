@@ -204,15 +204,20 @@ public:
     return a;
   }
 
-  // triplets of dK/du (symmetric positive semi-definite for E^2 / H^2 vertex scaling)
+  // triplets of dK/du (symmetric positive semi-definite for E^2 / H^2 vertex scaling); needs the cached
+  // angles (compute_angles())
   void hessian_triplets(std::vector<Eigen::Triplet<double> >& t) const
   {
     t.clear();
     t.reserve(9 * m.number_of_faces());
     for(F f : m.faces()) {
+      // uses the cached angles; a degenerate triangle (extended angles pi, 0, 0) contributes nothing
       H hs[3]; V cs[3]; double l[3], th[3], dth[3][3];
       face_data(m.halfedge(f), hs, cs, l);
-      if(!triangle_angles(geo, l, th, dth)) continue;
+      bool degenerate = false;
+      for(int i = 0; i < 3; ++i) { th[i] = angle[hs[i]]; if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3])) degenerate = true; }
+      if(degenerate) continue;
+      triangle_angle_derivatives(geo, l, th, dth);
       // dl[j][a]: d l_j / d u at corner a (edge j joins corners j+1 = source(h_j)... see face_data)
       double dl[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
       for(int j = 0; j < 3; ++j) {

@@ -94,6 +94,22 @@ inline bool triangle_angles_only(Background_geometry geo, const double l[3], dou
   return true;
 }
 
+/// The derivatives d theta_i / d l_j of `triangle_angles()` from known (non-degenerate) angles.
+inline void triangle_angle_derivatives(Background_geometry geo, const double l[3], const double theta[3], double dtheta[3][3])
+{
+  double c[3], g[3];
+  for(int i = 0; i < 3; ++i) { c[i] = std::cos(theta[i]); g[i] = length_sine(geo, l[i]); }
+  for(int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const double A = g[j] * g[k] * std::sin(theta[i]);
+    if(!(A > 0)) { dtheta[i][0] = dtheta[i][1] = dtheta[i][2] = 0; continue; }
+    const double gi = g[i] / A;
+    dtheta[i][i] = gi;
+    dtheta[i][j] = -gi * c[k];
+    dtheta[i][k] = -gi * c[j];
+  }
+}
+
 /// Area of a triangle with lengths l (E2: Heron; H2 and S2: the angle excess |pi - sum of angles|).
 inline double triangle_area(Background_geometry geo, const double l[3], const double theta[3])
 {
