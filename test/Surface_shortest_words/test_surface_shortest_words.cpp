@@ -365,6 +365,7 @@ CGAL_HC_TEST_CASE(near_degenerate_loops)
   Surface s(S.mesh, S.length);
   Solver solver(s, S.base, S.generators);
   CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+  Cayley_ball ball(S, 4);
   // along a generator: the shortest loop is the generator itself (it runs along edges)
   for(int i = 0; i < 4; ++i) {
     const SSW::Word w{i + 1};
@@ -382,6 +383,8 @@ CGAL_HC_TEST_CASE(near_degenerate_loops)
     CGAL_HC_CHECK_MSG(res.empty() ? cst.is_contractible(pos(S.mesh, hs))
                                   : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res))), SSW::to_string(w));
     CGAL_HC_CHECK_MSG(res.size() <= w.size(), SSW::to_string(w) << " -> " << SSW::to_string(res));
+    const int best = ball.word_length(rho_word(S, w));
+    CGAL_HC_CHECK_MSG(best >= 0 && int(res.size()) == best, SSW::to_string(w) << " -> " << SSW::to_string(res) << " shortest " << best);
   }
   // the relator gives the empty word
   CGAL_HC_CHECK(solver.word(vertex_path(s, realize(S, solver.relator()))).empty());
@@ -408,6 +411,10 @@ CGAL_HC_TEST_CASE(bad_paths_throw)
   }
   CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, far_away), SSW::Invalid_path_error);
   CGAL_HC_CHECK_THROWS(solver.word(far_away), SSW::Invalid_path_error);
+  // a vertex or halfedge that is not on the mesh
+  Path ghost{SPoint::vertex(S.base), SPoint::vertex(Mesh::Vertex_index(Mesh::size_type(num_vertices(S.mesh) + 10)))};
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, ghost), SSW::Invalid_path_error);
+  CGAL_HC_CHECK_THROWS(s.path_from_halfedges({Mesh::Halfedge_index(Mesh::size_type(10 * num_halfedges(S.mesh)))}), SSW::Invalid_path_error);
   // edge point with a bad parameter
   Path bad_t{SPoint::vertex(S.base), SPoint::on_edge(S.generators[0][0], 1.5)};
   CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, bad_t), SSW::Invalid_path_error);

@@ -11,6 +11,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Path_on_surface.h>
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 
 #include <cmath>
 #include <sstream>
@@ -20,6 +21,18 @@
 
 namespace CGAL {
 namespace Surface_shortest_words {
+
+namespace internal {
+// validity of handles given by the user (Surface_mesh: index in range and not removed; other graphs: trusted)
+template <class P>
+bool is_valid_handle(const CGAL::Surface_mesh<P>& m, typename CGAL::Surface_mesh<P>::Vertex_index v)
+{ return std::size_t(v) < m.num_vertices() && !m.is_removed(v); }
+template <class P>
+bool is_valid_handle(const CGAL::Surface_mesh<P>& m, typename CGAL::Surface_mesh<P>::Halfedge_index h)
+{ return std::size_t(h) < m.num_halfedges() && !m.is_removed(m.edge(h)); }
+template <class G, class H>
+bool is_valid_handle(const G&, const H&) { return true; }
+} // namespace internal
 
 /// \ingroup PkgSurfaceShortestWordsRef
 /// Thrown when the mesh or its edge lengths do not define a closed hyperbolic surface (open or non-triangle
@@ -134,9 +147,10 @@ public:
   void check_point(const Point& p) const
   {
     if(p.on_vertex) {
-      if(p.v == vertex_descriptor() && num_vertices(tm_) == 0) throw Invalid_path_error("invalid vertex");
+      if(!internal::is_valid_handle(tm_, p.v)) throw Invalid_path_error("Surface_shortest_words: invalid vertex (not on the mesh)");
       return;
     }
+    if(!internal::is_valid_handle(tm_, p.h)) throw Invalid_path_error("Surface_shortest_words: invalid halfedge (not on the mesh)");
     if(!(p.t > 0.0 && p.t < 1.0) || !std::isfinite(p.t))
       throw Invalid_path_error("Surface_shortest_words: an edge point needs 0 < t < 1 (use a vertex point at the ends)");
   }
@@ -217,6 +231,8 @@ public:
   {
     Path r;
     if(hs.empty()) return r;
+    for(halfedge_descriptor h : hs)
+      if(!internal::is_valid_handle(tm_, h)) throw Invalid_path_error("Surface_shortest_words: invalid halfedge (not on the mesh)");
     r.push_back(Point::vertex(source(hs.front(), tm_)));
     for(std::size_t i = 0; i < hs.size(); ++i) {
       if(i > 0 && source(hs[i], tm_) != target(hs[i - 1], tm_))
