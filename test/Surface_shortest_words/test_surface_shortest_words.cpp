@@ -354,8 +354,24 @@ CGAL_HC_TEST_CASE(words_are_shortest_cayley_bfs)
       CGAL_HC_CHECK(SSW::internal::free_reduce(res) == res);
       CGAL_HC_CHECK(SSW::internal::dehn_reduce(res, solver.relator()).size() == res.size());
     }
-    std::cout << "  genus " << g << ": " << compared << " words compared with BFS, " << mismatched << " longer" << std::endl;
-    CGAL_HC_CHECK(compared > 20);
+    // random loops on the mesh (not concatenations of generators): homotopy by CGAL's oracle, length by BFS
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+    int loops_compared = 0;
+    for(int trial = 0; trial < (g == 2 ? 120 : 50); ++trial) {
+      const auto hs = random_loop(S.mesh, S.base, 20 + rng() % 100, rng);
+      const SSW::Word res = solver.word(vertex_path(s, hs));
+      CGAL_HC_CHECK(res.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res))));
+      const int best = ball.word_length(rho_word(S, res));
+      if(best >= 0) {
+        ++loops_compared;
+        if(int(res.size()) != best) ++mismatched;
+        CGAL_HC_CHECK_MSG(int(res.size()) == best, "genus " << g << ": loop word " << SSW::to_string(res) << " but the shortest word has length " << best);
+      }
+    }
+    std::cout << "  genus " << g << ": " << compared << " words and " << loops_compared << " random loops compared with BFS, "
+              << mismatched << " longer" << std::endl;
+    CGAL_HC_CHECK(compared > 20 && loops_compared > 20);
   }
 }
 
