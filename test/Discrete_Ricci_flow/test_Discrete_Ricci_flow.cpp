@@ -262,6 +262,23 @@ CGAL_HC_TEST_CASE(bad_input)
   CGAL_HC_CHECK_THROWS(RF::flat_metric(eight), RF::Ricci_flow_error);
   // an empty mesh
   CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(Mesh()), RF::Ricci_flow_error);
+  // a non-manifold vertex: two triangles sharing only a vertex (a bow tie)
+  Mesh bowtie;
+  {
+    auto o = bowtie.add_vertex(Point_3(0, 0, 0));
+    auto a = bowtie.add_vertex(Point_3(1, 0, 0)), b = bowtie.add_vertex(Point_3(1, 1, 0));
+    auto c = bowtie.add_vertex(Point_3(-1, 0, 0)), d = bowtie.add_vertex(Point_3(-1, -1, 0));
+    bowtie.add_face(o, a, b);
+    bowtie.add_face(o, c, d);
+  }
+  std::vector<double> bl(bowtie.number_of_edges());
+  CGAL_HC_CHECK(bowtie.number_of_faces() == 2);
+  std::string what;
+  try {
+    RF::compute_metric(bowtie, CGAL::Constant_property_map<Mesh::Vertex_index, double>(CGAL_PI / 3),
+                       CGAL::make_property_map(bl), RF::parameters::background_geometry(Background_geometry::EUCLIDEAN));
+  } catch(const RF::Ricci_flow_error& e) { what = e.what(); }
+  CGAL_HC_CHECK_MSG(what.find("non-manifold") != std::string::npos, "message: " << what);
 }
 
 // non-convergence is a status, with finite lengths

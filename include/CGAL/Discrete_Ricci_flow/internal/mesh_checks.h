@@ -68,7 +68,14 @@ void check_triangle_mesh(const TriangleMesh& tm)
   for(vertex_descriptor v : vertices(tm)) {
     if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
       throw Ricci_flow_error("the mesh has an isolated vertex");
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm)) { (void)h; ++around; }
+    // a manifold vertex has at most one border halfedge entering it; several umbrellas joined through the
+    // border (a "bow tie") have more
+    std::size_t border_in = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm)) {
+      ++around;
+      if(CGAL::is_border(h, tm)) ++border_in;
+    }
+    if(border_in > 1) throw Ricci_flow_error("the mesh has a non-manifold vertex");
   }
   if(around != incoming) throw Ricci_flow_error("the mesh has a non-manifold vertex");
 }
