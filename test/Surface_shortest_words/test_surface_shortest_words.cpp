@@ -6,6 +6,10 @@
 #include <CGAL/Surface_shortest_words.h>
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/Curves_on_surface_topology.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <boost/property_map/property_map.hpp>
 
 #if __has_include(<CGAL/Discrete_Ricci_flow.h>)
 #include <CGAL/Discrete_Ricci_flow.h>
@@ -485,6 +489,34 @@ CGAL_HC_TEST_CASE(greedy_basis_words_cgal_oracle)
       }
     }
   }
+}
+
+// any FaceGraph: the same surface as a Polyhedron_3 with lengths in an associative property map
+CGAL_HC_TEST_CASE(polyhedron_3_face_graph)
+{
+  typedef CGAL::Polyhedron_3<CGAL::Epick> Poly;
+  typedef boost::graph_traits<Poly>::edge_descriptor PE;
+  typedef boost::graph_traits<Poly>::halfedge_descriptor PH;
+  RPS S(2, 4);
+  Poly P;
+  std::map<Mesh::Halfedge_index, PH> h2h;
+  std::map<Mesh::Vertex_index, boost::graph_traits<Poly>::vertex_descriptor> v2v;
+  CGAL::copy_face_graph(S.mesh, P, CGAL::parameters::vertex_to_vertex_output_iterator(std::inserter(v2v, v2v.end()))
+                                     .halfedge_to_halfedge_output_iterator(std::inserter(h2h, h2h.end())));
+  std::map<PE, double> lengths;
+  for(auto e : edges(S.mesh)) lengths[edge(h2h[halfedge(e, S.mesh)], P)] = S.length[e];
+  boost::associative_property_map<std::map<PE, double> > lm(lengths);
+  typedef SSW::Hyperbolic_surface<Poly, decltype(lm)> PSurface;
+  PSurface s(P, lm);
+  CGAL_HC_CHECK(s.genus() == 2);
+  std::vector<std::vector<PH> > gens;
+  for(const auto& g : S.generators) { gens.emplace_back(); for(auto h : g) gens.back().push_back(h2h[h]); }
+  SSW::Shortest_word_solver<Poly, decltype(lm)> solver(s, v2v[S.base], gens);
+  CGAL_HC_CHECK(solver.word(s.path_from_halfedges(solver.realize(SSW::Word{1, 2, -1}))) == (SSW::Word{1, 2, -1}));
+  SSW::Shortest_word_solver<Poly, decltype(lm)> computed(s, v2v[S.base]);
+  CGAL_HC_CHECK(computed.is_canonical());
+  const auto r = SSW::shortest_homotopic_loop(s, s.path_from_halfedges(gens[0]));
+  CGAL_HC_CHECK(std::abs(r.length - 2 * std::acosh(S.rho_generator(0).half_trace())) < 1e-6);
 }
 
 #ifdef SSW_HAS_RICCI_FLOW
