@@ -487,6 +487,11 @@ CGAL_HC_TEST_CASE(bolza_surface)
     for(std::size_t i = 0; i < emb.number_of_generators(); ++i) none_shorter = none_shorter && emb.absolute_trace(i) > systole_trace - 1e-7;
     CGAL_HC_CHECK(none_shorter);
     CGAL_HC_CHECK(emb.relator_defect() < 1e-8);
+    // the embedding keeps its own copy of the metric: built from a temporary, copied, it stays valid
+    const Embedding from_temporary(RF::hyperbolic_uniformization(tm), Mesh::Vertex_index(0));
+    const Embedding copy = from_temporary;
+    CGAL_HC_CHECK(copy.number_of_generators() == 4 && std::abs(copy.absolute_trace(0) - emb.absolute_trace(0)) < 1e-12);
+    CGAL_HC_CHECK(copy.mesh().number_of_faces() == tm.number_of_faces());
     std::cout << "  Bolza n = " << n << ": " << tm.number_of_faces() << " faces, |traces|:";
     for(std::size_t i = 0; i < emb.number_of_generators(); ++i) std::cout << " " << emb.absolute_trace(i);
     std::cout << " (2 + 2 sqrt 2 = " << systole_trace << ")" << std::endl;

@@ -19,6 +19,7 @@
 #include <complex>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <limits>
 #include <queue>
 #include <string>
@@ -125,12 +126,14 @@ public:
   };
 
   /*!
-    Builds the embedding (`metric` must outlive it). `metric` must be a converged (or stagnated below 1e-9) metric of a closed surface with a hyperbolic background
+    Builds the embedding (a copy of `metric` is kept, shared by copies of the embedding). `metric` must be a
+    converged (or stagnated below 1e-9) metric of a closed surface with a hyperbolic background
     (genus >= 2) or a Euclidean background (genus 1), with zero target curvature everywhere (no cones).
     \throws Ricci_flow_error otherwise.
   */
   explicit Hyperbolic_embedding(const Metric& metric, Vertex_index base = Vertex_index(0))
-    : metric_(metric), m_(metric.intrinsic_mesh()), base_(base)
+    : metric_ptr_(std::make_shared<const Metric>(metric)), metric_(*metric_ptr_), m_(metric_.intrinsic_mesh()),
+      base_(base)
   {
     hyperbolic_ = metric.background_geometry() == Background_geometry::HYPERBOLIC;
     if(metric.background_geometry() == Background_geometry::SPHERICAL)
@@ -152,13 +155,15 @@ public:
     compute_boundary();
   }
 
+  /// the metric (the embedding's copy) and its intrinsic mesh, whose halfedges the loops refer to
   const Metric& metric() const { return metric_; }
   const Mesh& mesh() const { return m_; }
   Vertex_index base_vertex() const { return base_; }
   long genus() const { return metric_.genus(); }
   std::size_t number_of_generators() const { return loops_.size(); }
 
-  /// the 2g loops of the homotopy basis: halfedges of `mesh()`, each loop starts and ends at `base_vertex()`
+  /// the 2g loops of the homotopy basis: halfedges of `mesh()` (the same indices as in the metric's
+  /// `intrinsic_mesh()`), each loop starts and ends at `base_vertex()`
   const std::vector<std::vector<Halfedge_index> >& homotopy_basis() const { return loops_; }
 
   /// the length of loop i in the metric (at least its translation length)
@@ -636,6 +641,7 @@ private:
     }
   }
 
+  std::shared_ptr<const Metric> metric_ptr_;
   const Metric& metric_;
   const Mesh& m_;
   Vertex_index base_;
