@@ -275,6 +275,9 @@ CGAL_HC_TEST_CASE(shortest_loops_match_the_holonomy)
       CGAL_HC_CHECK_MSG(std::abs(free_loop.length - tl) < 1e-6, SSW::to_string(w) << ": " << free_loop.length << " vs " << tl
                         << " after " << free_loop.iterations << " iterations");
       CGAL_HC_CHECK(free_loop.converged);
+      // the named-parameter form: number_of_iterations bounds the re-basing
+      auto one = SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(1));
+      CGAL_HC_CHECK(one.iterations == 1 && std::abs(one.length - based.length) < 1e-9);
     }
   }
 }

@@ -628,6 +628,24 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
   return r;
 }
 
+
+/*!
+  \ingroup PkgSurfaceShortestWordsRef
+  `shortest_homotopic_loop()` with CGAL named parameters: `CGAL::parameters::number_of_iterations(n)` (the
+  maximum number of re-basing iterations, default 200); the tolerance is 1e-12 and the path options are the
+  defaults. Example: `shortest_homotopic_loop(surface, loop, CGAL::parameters::number_of_iterations(50))`.
+*/
+template <class Surface, class T, class Tag, class Base>
+Shortest_path_result<typename Surface::Triangle_mesh>
+shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& loop,
+                        const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const std::size_t n = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 200));
+  return shortest_homotopic_loop(surface, loop, 1e-12, n);
+}
+
 } // namespace Surface_shortest_words
 } // namespace CGAL
 
