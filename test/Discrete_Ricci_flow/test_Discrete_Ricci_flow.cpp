@@ -487,6 +487,14 @@ CGAL_HC_TEST_CASE(bolza_surface)
     for(std::size_t i = 0; i < emb.number_of_generators(); ++i) none_shorter = none_shorter && emb.absolute_trace(i) > systole_trace - 1e-7;
     CGAL_HC_CHECK(none_shorter);
     CGAL_HC_CHECK(emb.relator_defect() < 1e-8);
+    // the base point (a Weierstrass point) lies on the axes of the systoles: every side of the relator polygon
+    // (the displacement of the base point by a generator) has the octagon's side length
+    const auto poly = emb.relator_polygon();
+    CGAL_HC_CHECK(poly.size() == 8);
+    double side_dev = 0;
+    for(std::size_t k = 0; k < poly.size(); ++k)
+      side_dev = (std::max)(side_dev, std::abs(disk_distance(poly[k], poly[(k + 1) % poly.size()]) - octagon_side));
+    CGAL_HC_CHECK_MSG(side_dev < 1e-7, "relator polygon side deviation " << side_dev);
     // the embedding keeps its own copy of the metric: built from a temporary, copied, it stays valid
     const Embedding from_temporary(RF::hyperbolic_uniformization(tm), Mesh::Vertex_index(0));
     const Embedding copy = from_temporary;

@@ -206,6 +206,23 @@ public:
     return m.normalized();
   }
 
+  /// The relator polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (0), k = 0 .. 4g-1, for the letters
+  /// w_k of `relator()` (the base vertex's copy is at the origin). Its geodesic sides are lifts of the geodesic
+  /// loops based at the base vertex in the classes of the basis loops; when those geodesic loops are simple and
+  /// meet only at the base vertex it is a fundamental polygon of the group, paired by the deck transformations
+  /// (e.g. the regular octagon of the Bolza surface based at a Weierstrass point).
+  std::vector<Complex> relator_polygon() const
+  {
+    std::vector<Complex> p;
+    internal::Moebius m;
+    for(const auto& l : relator_) {
+      const internal::Cplx z = m(internal::Cplx(0));
+      p.push_back(Complex(double(z.real()), double(z.imag())));
+      m = m * (l.second > 0 ? hol_[l.first] : hol_[l.first].inverse());
+    }
+    return p;
+  }
+
   /// distance of `relator_product()` to +-I (max entry difference)
   double relator_defect() const
   {
