@@ -119,7 +119,7 @@ public:
     return a;
   }
 
-  // filled by compute_metric
+  // implementation details, filled by compute_metric() (not part of the documented interface)
   Mesh mesh_;
   Edge_length_map lengths_;
   Background_geometry geo_ = Background_geometry::HYPERBOLIC;
@@ -447,7 +447,12 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   res.u_ = eng.u;
   res.target_ = target_k;
   res.lengths_ = m.template add_property_map<E, double>("e:length", 0.0).first;
-  for(E e : m.edges()) res.lengths_[e] = eng.len[e];
+  for(E e : m.edges()) {
+    // only a non-finite initial state can get here (steps with non-finite values are never accepted)
+    if(!std::isfinite(eng.len[e]))
+      throw Ricci_flow_error("numerical failure: the initial state of the scheme has non-finite edge lengths");
+    res.lengths_[e] = eng.len[e];
+  }
   // the user's mesh: lengths of the input connectivity under the final conformal factors
   res.input_valid_ = true;
   {
