@@ -82,7 +82,7 @@ struct Word_result
   Word word;                              ///< the reduced word (the answer)
   Word crossing_word;                     ///< the word read from the crossings, before reduction
   Surface_path<TriangleMesh> loop;        ///< the loop whose crossings were read (shortest, if geometry was used)
-  double length = 0;                      ///< its hyperbolic length
+  double length = 0;                      ///< its hyperbolic length (0 when `used_geometry` is false)
   bool used_geometry = false;             ///< false if the loop was too long for the geometric shortening
 };
 
@@ -102,7 +102,10 @@ struct Word_result
   `solve(loop)` (a loop based at p) follows Algorithm 4: the loop is first replaced by the shortest loop
   through p in its class (Algorithm 2), then its crossings with the generator loops are read in order:
   leaving the disk through the side s_k multiplies the current element by the side pairing
-  h_k = (s_1 ... s_k)(s_1 ... s_{j-1})^-1, j the partner side of k. Where the shortest loop passes through a
+  h_k = (s_1 ... s_k)(s_1 ... s_{j-1})^-1, j the partner side of k. (The thesis' rule "crossing a_i gives
+  the letter b_i^+-1" is this formula for the first handle; for the other handles h_k is a conjugate of
+  that letter by a prefix of the relator, and with the base point at a corner of the disk the conjugates are
+  needed for an exact word.) Where the shortest loop passes through a
   vertex (in particular p) or runs along a generator, it is perturbed around the vertex on the side that
   crosses fewer generators; the start and the end are joined to the base corner the same way. The word is
   then freely reduced and Dehn-reduced (a subword longer than half a cyclic conjugate of the relator or its
