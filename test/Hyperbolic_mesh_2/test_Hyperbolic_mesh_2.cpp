@@ -584,4 +584,51 @@ CGAL_HC_TEST_CASE(svg_output)
   CGAL_HC_CHECK(*std::min_element(a.begin(), a.end()) >= deg(40) - 1e-9);
 }
 
+// Random star polygons (some near the circle at infinity, with sharp angles) with interior points and segments,
+// random criteria and algorithm: never an exception, a hang or an invalid triangulation; the run ends with a
+// status, and every poor face left is counted (protected or unrefinable).
+CGAL_HC_TEST_CASE(random_inputs_robustness)
+{
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int runs = 0;
+  for(int it = 0; it < 60; ++it) {
+    const int n = 3 + int(rng() % 12);
+    const double R = 0.3 + 0.69 * std::abs(u(rng));
+    Pslg g;
+    std::vector<double> ang;
+    for(int i = 0; i < n; ++i) ang.push_back(PI * (u(rng) + 1));
+    std::sort(ang.begin(), ang.end());
+    for(int i = 0; i < n; ++i) {
+      const double r = R * (0.5 + 0.5 * std::abs(u(rng)));
+      g.points.push_back(Point(r * std::cos(ang[std::size_t(i)]), r * std::sin(ang[std::size_t(i)])));
+      g.segments.push_back(std::make_pair(i, (i + 1) % n));
+    }
+    const int extra = int(rng() % 5);
+    for(int k = 0; k < extra; ++k) {
+      g.points.push_back(Point(0.3 * R * u(rng), 0.3 * R * u(rng)));
+      if(k % 2 == 1) g.segments.push_back(std::make_pair(int(g.points.size()) - 2, int(g.points.size()) - 1));
+    }
+    CDT cdt;
+    try { build(cdt, g); } catch(const HM::Input_error&) { continue; } // random crossings are rejected: fine
+    if(cdt.dimension() < 2) continue;
+    const bool chew = rng() % 2 == 0;
+    const double eps = rng() % 2 ? std::numeric_limits<double>::infinity() : 0.05 + std::abs(u(rng));
+    const double alpha = deg(20 + 45 * std::abs(u(rng)));
+    const Params prm = Params().maximum_number_of_operations(20000).off_centers(rng() % 2 == 0);
+    Stats st;
+    bool thrown = false;
+    try {
+      st = chew ? CGAL::refine_hyperbolic_Chew_mesh_2(cdt, Chew_criteria(eps), prm)
+                : CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, Ruppert_criteria(alpha, eps), prm);
+    } catch(const std::exception& e) { thrown = true; std::cerr << "  run " << it << ": " << e.what() << std::endl; }
+    ++runs;
+    CGAL_HC_CHECK_MSG(!thrown, "run " << it);
+    CGAL_HC_CHECK_MSG(cdt.is_valid(), "run " << it << ": " << st);
+    CGAL_HC_CHECK(st.operations <= 20000);
+    CGAL_HC_CHECK(st.status != HM::Refinement_status::CANCELLED);
+  }
+  CGAL_HC_CHECK(runs >= 30);
+}
+
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }

@@ -126,6 +126,7 @@ struct Mesh_statistics
   std::size_t small_input_angles = 0;       ///< input corners with angle < pi/2
   std::size_t protected_faces = 0;          ///< poor faces left at small input angles (by design, thesis Fig 3.6)
   std::size_t unrefinable_faces = 0;        ///< poor faces whose Steiner point could not be inserted (rounding)
+  std::size_t unsplittable_segments = 0;    ///< subsegments whose rounded split point would invert a face
   std::size_t in_domain_faces = 0;
   double minimum_central_angle = 0;         ///< over in-domain faces (approximate, double)
   double minimum_central_angle_unprotected = 0; ///< same, ignoring the protected faces at small input angles
@@ -149,7 +150,7 @@ struct Mesh_statistics
               << " min_central_angle_deg=" << s.minimum_central_angle * 57.29577951308232
               << " (unprotected " << s.minimum_central_angle_unprotected * 57.29577951308232 << ")"
               << " max_circumradius=" << s.maximum_circumradius << " protected=" << s.protected_faces
-              << " unrefinable=" << s.unrefinable_faces << " h*=" << s.h_star
+              << " unrefinable=" << s.unrefinable_faces << " unsplittable=" << s.unsplittable_segments << " h*=" << s.h_star
               << " termination_guaranteed=" << s.termination_guaranteed << " (" << s.termination_note << ")"
               << " time=" << s.seconds << "s";
   }

@@ -74,7 +74,7 @@ public:
     mark_domain(cdt_, prm_.seeds(), prm_.seeds_are_in_domain());
     collect_input();
     if(prm_.corner_lopping()) lop_corners();
-    if(is_Chew) compute_h_star();
+    compute_h_star(); // also the smallest feature size, for the resolution guard of segment splits
     set_termination_report();
 
     // initial queues
@@ -222,13 +222,14 @@ private:
   void compute_h_star()
   {
     double h = crit_.has_size_bound() ? crit_.epsilon() : std::numeric_limits<double>::infinity();
+    double h_feat = std::numeric_limits<double>::infinity(); // distances between non-incident features only
     std::vector<std::pair<Vertex_handle, Vertex_handle> > segs;
     for(auto e = cdt_.finite_edges_begin(); e != cdt_.finite_edges_end(); ++e) {
       Vertex_handle a = e->first->vertex(CDT::ccw(e->second)), b = e->first->vertex(CDT::cw(e->second));
       if(frame_.count(a) || frame_.count(b)) continue;
       const double d = approximate_distance(a->point(), b->point());
       if(cdt_.is_constrained(*e)) { segs.push_back(std::make_pair(a, b)); h = std::min(h, d / 2); }
-      else h = std::min(h, d);
+      else h_feat = std::min(h_feat, d);
     }
     const std::size_t n = cdt_.number_of_vertices();
     if(double(n) * double(segs.size()) <= 2e7) {
@@ -236,7 +237,7 @@ private:
         if(!frame_.count(v))
         for(const auto& s : segs)
           if(Vertex_handle(v) != s.first && Vertex_handle(v) != s.second)
-            h = std::min(h, point_segment_distance(v->point(), s.first->point(), s.second->point()));
+            h_feat = std::min(h_feat, point_segment_distance(v->point(), s.first->point(), s.second->point()));
     } else {
       // large inputs: segments of the faces around each vertex only (documented approximation)
       for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v) {
@@ -246,13 +247,14 @@ private:
           if(cdt_.is_infinite(fc)) continue;
           const int i = fc->index(v);
           if(cdt_.is_constrained(Edge(fc, i)))
-            h = std::min(h, point_segment_distance(v->point(), fc->vertex(CDT::ccw(i))->point(),
-                                                   fc->vertex(CDT::cw(i))->point()));
+            h_feat = std::min(h_feat, point_segment_distance(v->point(), fc->vertex(CDT::ccw(i))->point(),
+                                                             fc->vertex(CDT::cw(i))->point()));
         } while(++fc != done);
       }
     }
-    h_star_ = h;
-    st_.h_star = h;
+    min_feature_ = h_feat;
+    h_star_ = std::min(h, h_feat);
+    if constexpr(is_Chew) st_.h_star = h_star_;
   }
 
   void set_termination_report()
@@ -302,6 +304,14 @@ private:
 
   void post_insert(Vertex_handle v)
   {
+#ifdef CGAL_HYPERBOLIC_MESH_2_DEBUG_VALIDITY
+    if(!cdt_.is_valid()) throw std::logic_error("invalid after inserting " + std::to_string(CGAL::to_double(v->point().x())) +
+                                                " " + std::to_string(CGAL::to_double(v->point().y())) +
+                                                (seg_of_.count(v) ? " on a segment" : " in a face") + " nearest " +
+                                                [&] { double m = 1e300; auto vc = cdt_.incident_vertices(v), d = vc;
+                                                      do { if(!cdt_.is_infinite(vc)) m = std::min(m, std::sqrt(CGAL::to_double(CGAL::squared_distance(v->point(), vc->point())))); } while(++vc != d);
+                                                      return std::to_string(m); }());
+#endif
     auto fc = cdt_.incident_faces(v), done = fc;
     do {
       if(cdt_.is_infinite(fc)) continue;
@@ -373,7 +383,7 @@ private:
       int i = longest_edge(f);
       Edge e(f, i);
       Vertex_handle a = f->vertex(CDT::ccw(i)), b = f->vertex(CDT::cw(i));
-      if(cdt_.is_constrained(e)) { requeue_after(f, [&] { split_encroached_segment(a, b); }); return; }
+      if(cdt_.is_constrained(e)) { requeue_after(f, [&] { return split_encroached_segment(a, b); }); return; }
       insert_steiner(f, gt_.construct_hyperbolic_midpoint_2_object()(a->point(), b->point()), false);
       return;
     }
@@ -416,7 +426,9 @@ private:
     const double d = approximate_distance(p, q);
     const double sh = std::sinh(d / 2) / std::sqrt(crit_.sin2_half_alpha());
     const double R = std::asinh(sh);
-    const double t = std::acosh(std::max(1.0, std::cosh(R) / std::cosh(d / 2)));
+    const double ratio = std::cosh(R) / std::cosh(d / 2);
+    if(!std::isfinite(ratio) || !std::isfinite(R)) return false;
+    const double t = std::acosh(std::max(1.0, ratio));
     const Point m = gt_.construct_hyperbolic_midpoint_2_object()(p, q);
     const double dmc = approximate_distance(m, c);
     if(!(t + R < dmc) || !(dmc > 0)) return false;
@@ -442,6 +454,7 @@ private:
 
   void insert_steiner(Face_handle f, const Point& c, bool is_off_center)
   {
+    if(!is_usable(c)) { ++st_.unrefinable_faces; return; }
     std::vector<Face_handle> zone; Face_set in_zone; std::vector<Edge> boundary;
     conflict_zone(f, c, zone, in_zone, boundary);
     // constrained boundary edges that c encroaches (Ruppert: diametral disk) or lies beyond (Chew: Lemma 3.5)
@@ -463,7 +476,7 @@ private:
           if(std::find(diametral.begin(), diametral.end(), e) != diametral.end()) { s = e; break; }
         ++st_.rejected_circumcenters;
         Vertex_handle a = s.first->vertex(CDT::ccw(s.second)), b = s.first->vertex(CDT::cw(s.second));
-        requeue_after(f, [&] { split_encroached_segment(a, b); });
+        requeue_after(f, [&] { return split_encroached_segment(a, b); });
         return;
       }
     } else if(!diametral.empty() || !beyond.empty()) {
@@ -474,9 +487,11 @@ private:
         insert_steiner(f, gt_.construct_hyperbolic_circumcenter_2_object()(p0, p1, p2), false);
         return;
       }
+      bool any = false;
+      for(const Edge& e : diametral) any = push_forced(e) || any;
+      for(const Edge& e : beyond) any = push_forced(e) || any;
+      if(!any) { ++st_.unrefinable_faces; return; } // only unsplittable segments: give up on f
       ++st_.rejected_circumcenters;
-      for(const Edge& e : diametral) push_forced(e);
-      for(const Edge& e : beyond) push_forced(e);
       consider_face(f); // re-queued: it is refined again once the segments are split
       return;
     }
@@ -488,7 +503,7 @@ private:
       if(cdt_.is_constrained(Edge(loc, li))) {
         ++st_.rejected_circumcenters;
         Vertex_handle a = loc->vertex(CDT::ccw(li)), b = loc->vertex(CDT::cw(li));
-        requeue_after(f, [&] { split_encroached_segment(a, b); });
+        requeue_after(f, [&] { return split_encroached_segment(a, b); });
         return;
       }
       inside = in_zone.count(loc) > 0 || in_zone.count(loc->neighbor(li)) > 0;
@@ -511,27 +526,29 @@ private:
     const Queued_face q{approximate_cosh2_circumradius(f->vertex(0)->point(), f->vertex(1)->point(),
                                                        f->vertex(2)->point()),
                         f->vertex(0), f->vertex(1), f->vertex(2)};
-    split();
-    bad_.push(q);
+    if(split()) bad_.push(q);
+    else ++st_.unrefinable_faces; // the segment cannot be split (see split_segment): give up on f
   }
 
-  void push_forced(const Edge& e)
+  bool push_forced(const Edge& e)
   {
     Vertex_handle a = e.first->vertex(CDT::ccw(e.second)), b = e.first->vertex(CDT::cw(e.second));
+    if(stuck_.count(key(a, b))) return false;
     forced_.insert(key(a, b));
     encroached_.push_back(std::make_pair(a, b));
+    return true;
   }
 
   // ------------------------------------------------------------------ segment splits
-  void split_encroached_segment(Vertex_handle a, Vertex_handle b)
+  bool split_encroached_segment(Vertex_handle a, Vertex_handle b)
   {
     const Point &pa = a->point(), &pb = b->point();
     if(!is_Chew) {
       Vertex_handle v = split_segment(a, b, gt_.construct_hyperbolic_midpoint_2_object()(pa, pb));
-      if(v == Vertex_handle()) return;
+      if(v == Vertex_handle()) return false;
       ++st_.midpoint_splits; ++st_.operations;
       post_insert(v);
-      return;
+      return true;
     }
     const double L = approximate_distance(pa, pb);
     const Point a_pt = pa, b_pt = pb;
@@ -540,7 +557,7 @@ private:
       const Point p1 = gt_.construct_hyperbolic_point_on_segment_2_object()(a_pt, b_pt, FT(1.0 / 3));
       const Point p2 = gt_.construct_hyperbolic_point_on_segment_2_object()(a_pt, b_pt, FT(2.0 / 3));
       Vertex_handle v1 = split_segment(a, b, p1);
-      if(v1 == Vertex_handle()) return;
+      if(v1 == Vertex_handle()) return false;
       Vertex_handle v2 = split_segment(v1, b, p2);
       ++st_.one_third_splits; st_.operations += (v2 == Vertex_handle() ? 1 : 2);
       const double r = L / 3;
@@ -552,9 +569,10 @@ private:
       for(Vertex_handle x : doomed) remove_free_vertex(x);
       post_insert(v1);
       if(v2 != Vertex_handle()) post_insert(v2);
+      return true;
     } else {
       Vertex_handle v = split_segment(a, b, gt_.construct_hyperbolic_midpoint_2_object()(a_pt, b_pt));
-      if(v == Vertex_handle()) return;
+      if(v == Vertex_handle()) return false;
       ++st_.midpoint_splits; ++st_.operations;
       std::vector<Vertex_handle> doomed;
       collect_free_near(v, [&](Vertex_handle x) {
@@ -562,6 +580,7 @@ private:
       }, doomed);
       for(Vertex_handle x : doomed) remove_free_vertex(x);
       post_insert(v);
+      return true;
     }
   }
 
@@ -578,6 +597,7 @@ private:
     Orientation side_f;
     if(!cdt_.is_infinite(f->vertex(i))) side_f = gt_.orientation_2_object()(pa, pb, f->vertex(i)->point());
     else side_f = Orientation(-int(gt_.orientation_2_object()(pa, pb, cdt_.mirror_vertex(f, i)->point())));
+    if(stuck_.count(key(a, b))) return Vertex_handle();
     const int seg = segment_id(a, b);
     // A rounded point of a convex-hull edge must not fall strictly inside the hull (the hull would stop being
     // convex at it and the triangulation invalid): nudge it away from the opposite vertex of the finite face until
@@ -593,6 +613,14 @@ private:
         q = Point(FT(px - t * (CGAL::to_double(x.x()) - px)), FT(py - t * (CGAL::to_double(x.y()) - py)));
         t *= 4;
       }
+    }
+    // Resolution guard: a subsegment shorter than 1e-3 times the smallest input feature size (or with a Euclidean
+    // length below 1e-11) is not split: a terminating refinement never goes that far below the local feature size,
+    // and cascades of splits (small angles between non-adjacent features) would otherwise reach the rounding level.
+    const double ex = CGAL::to_double(pa.x()) - CGAL::to_double(pb.x()), ey = CGAL::to_double(pa.y()) - CGAL::to_double(pb.y());
+    if(ex * ex + ey * ey < 1e-22 || approximate_distance(pa, pb) < 1e-3 * min_feature_ ||
+       !insertable_in_edge(q, f, i) || q == pa || q == pb) {
+      stuck_.insert(key(a, b)); ++st_.unsplittable_segments; return Vertex_handle();
     }
     Vertex_handle v = cdt_.insert(q, CDT::EDGE, f, i);
     dead_.erase(v);
@@ -612,6 +640,31 @@ private:
     } while(++fc != done);
     if(seg >= 0) seg_of_[v] = seg;
     return v;
+  }
+
+  // A constructed point is usable if it is finite and strictly inside the disk.
+  static bool is_usable(const Point& p)
+  {
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    return std::isfinite(x) && std::isfinite(y) && x * x + y * y < 1.0 - 1e-15;
+  }
+
+  // Inserting q into edge (f, i) keeps the triangulation valid iff the four new faces are positively oriented
+  // (q is rounded: on a very thin face it may fall on the wrong side of an old edge). Exact predicates.
+  bool insertable_in_edge(const Point& q, Face_handle f, int i) const
+  {
+    if(!is_usable(q)) return false;
+    for(Face_handle g : {f, f->neighbor(i)}) {
+      if(cdt_.is_infinite(g)) continue;
+      const int j = (g == f) ? i : cdt_.mirror_index(f, i);
+      const Point &x = g->vertex(j)->point(), &u = g->vertex(CDT::ccw(j))->point(), &w = g->vertex(CDT::cw(j))->point();
+      if(gt_.orientation_2_object()(x, u, q) != LEFT_TURN || gt_.orientation_2_object()(x, q, w) != LEFT_TURN)
+        return false;
+      // an opposite vertex almost on the segment, next to the split point: the new faces would be degenerate
+      const double l2 = CGAL::to_double(CGAL::squared_distance(u, w)), d2 = CGAL::to_double(CGAL::squared_distance(x, q));
+      if(d2 < 1e-6 * l2) return false;
+    }
+    return true;
   }
 
   template <class Pred>
@@ -732,6 +785,7 @@ private:
   Gt gt_;
   Mesh_statistics st_;
   double h_star_ = 0;
+  double min_feature_ = 0; // smallest distance between non-incident input features (after lopping)
   std::size_t next_report_ = 4096;
 
   std::priority_queue<Queued_face> bad_;
@@ -746,6 +800,7 @@ private:
   std::map<Vertex_handle, double> lop_radius_;
   std::unordered_set<Vertex_handle, Handle_hash_function> frame_;
   std::unordered_set<Vertex_handle, Handle_hash_function> dead_; // removed vertices (queued handles may name them)
+  std::set<std::pair<Vertex_handle, Vertex_handle> > stuck_;       // segments whose split point is unusable
 };
 
 } // namespace internal
