@@ -278,6 +278,14 @@ CGAL_HC_TEST_CASE(constrained_delaunay_no_intersection_tag)
   } catch(const std::exception& e) { threw = true; msg = e.what(); }
   CGAL_HC_CHECK(threw);
   CGAL_HC_CHECK_MSG(msg.find("intersection") != std::string::npos, msg);
+  // a constraint with an end point outside the disk is rejected with the traits' exception
+  CDT cdt2;
+  for(std::size_t i = 0; i < poly.size(); ++i)
+    cdt2.insert_constraint(P(poly[i].dx(), poly[i].dy()), P(poly[(i + 1) % poly.size()].dx(), poly[(i + 1) % poly.size()].dy()));
+  CGAL_HC_CHECK_THROWS(cdt2.insert_constraint(P(0.1, 0.1), P(1.0, 0.0)), CGAL::Poincare_disk_domain_error);
+  CGAL_HC_CHECK_THROWS(cdt2.insert_constraint(P(0.1, 0.1), P(0.5, std::numeric_limits<double>::infinity())),
+                       CGAL::Poincare_disk_domain_error);
+  CGAL_HC_CHECK(cdt2.is_valid());
 }
 
 namespace {
@@ -447,6 +455,8 @@ CGAL_HC_TEST_CASE(hyperbolic_delaunay_triangulation_2_matches_cgal_ck_traits)
     std::size_t i = 0;
     for(auto v = h.finite_vertices_begin(); v != h.finite_vertices_end(); ++v, ++i)
       (i % 3 == 0 ? del.push_back(v) : kept.push_back(v->point()));
+    std::vector<P> removed;
+    for(auto v : del) removed.push_back(v->point());
     for(auto v : del) h.remove(v);
     CGAL_HC_CHECK_MSG(h.is_valid(), w);
     HDT fresh(kept.begin(), kept.end());
@@ -455,6 +465,17 @@ CGAL_HC_TEST_CASE(hyperbolic_delaunay_triangulation_2_matches_cgal_ck_traits)
     for(const P& p : kept) kept_ck.push_back(CK_tr::Point_2(p.x(), p.y()));
     HDT_ck hc2(kept_ck.begin(), kept_ck.end());
     CGAL_HC_CHECK_MSG(hyperbolic_faces(h) == hyperbolic_faces(hc2), w << " after removal vs CK traits");
+    // one-by-one insertion of the removed points back: the triangulation of all the points again
+    for(const P& p : removed) h.insert(p);
+    CGAL_HC_CHECK_MSG(h.is_valid() && hyperbolic_faces(h) == fb, w << " after re-insertion one by one");
+  }
+  // bad points are rejected by the hyperbolic triangulation too
+  {
+    std::vector<P> pts = {P(0.1, 0.2), P(-0.4, 0.3), P(0.2, -0.6)};
+    HDT h(pts.begin(), pts.end());
+    CGAL_HC_CHECK_THROWS(h.insert(P(0.6, 0.8000001)), CGAL::Poincare_disk_domain_error);
+    CGAL_HC_CHECK_THROWS(h.insert(P(std::numeric_limits<double>::quiet_NaN(), 0)), CGAL::Poincare_disk_domain_error);
+    CGAL_HC_CHECK(h.number_of_vertices() == 3 && h.is_valid());
   }
 }
 
