@@ -103,9 +103,9 @@ struct Word_result
   through p in its class (Algorithm 2), then its crossings with the generator loops are read in order:
   leaving the disk through the side s_k multiplies the current element by the side pairing
   h_k = (s_1 ... s_k)(s_1 ... s_{j-1})^-1, j the partner side of k. (The thesis' rule "crossing a_i gives
-  the letter b_i^+-1" is this formula for the first handle; for the other handles h_k is a conjugate of
-  that letter by a prefix of the relator, and with the base point at a corner of the disk the conjugates are
-  needed for an exact word.) Where the shortest loop passes through a
+  the letter b_i^+-1, crossing b_i gives a_i^+-1" holds up to conjugation: h_k is that letter conjugated by a
+  prefix of the relator, e.g. h_1 = a1 b1^-1 a1^-1; with the base point at a corner of the disk the
+  conjugates are needed for an exact word, and the reduction removes them.) Where the shortest loop passes through a
   vertex (in particular p) or runs along a generator, it is perturbed around the vertex on the side that
   crosses fewer generators; the start and the end are joined to the base corner the same way. The word is
   then freely reduced and Dehn-reduced (a subword longer than half a cyclic conjugate of the relator or its
