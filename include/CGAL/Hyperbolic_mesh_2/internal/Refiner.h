@@ -452,9 +452,41 @@ private:
     }
   }
 
+  // Fast path (the common case, as in Mesh_2): locate c from f, take CGAL's conflict zone of c (ordered
+  // boundary), and if f is in it (c visible from f), c is in the domain and c encroaches no constrained edge of
+  // the zone boundary, insert c with star_hole() on that zone (no second conflict computation). Returns false
+  // when the general path below must decide.
+  bool try_insert_steiner_fast(Face_handle f, const Point& c, bool is_off_center)
+  {
+    Locate_type lt; int li;
+    Face_handle loc = cdt_.locate(c, lt, li, f);
+    if(lt != CDT::FACE || cdt_.is_infinite(loc) || !loc->is_in_domain()) return false;
+    fast_faces_.clear(); fast_edges_.clear();
+    cdt_.get_conflicts_and_boundary(c, std::back_inserter(fast_faces_), std::back_inserter(fast_edges_), loc);
+    if(std::find(fast_faces_.begin(), fast_faces_.end(), f) == fast_faces_.end()) return false;
+    for(const Edge& e : fast_edges_) {
+      if(!cdt_.is_constrained(e)) continue;
+      const Point &a = e.first->vertex(CDT::ccw(e.second))->point(), &b = e.first->vertex(CDT::cw(e.second))->point();
+      if(gt_.side_of_hyperbolic_diametral_circle_2_object()(a, b, c) != ON_UNBOUNDED_SIDE) {
+        if(is_Chew) continue; // Chew only rejects circumcenters beyond a segment; c is inside the zone here
+        return false;
+      }
+    }
+    Vertex_handle v = cdt_.star_hole(c, fast_edges_.begin(), fast_edges_.end(), fast_faces_.begin(), fast_faces_.end());
+    dead_.erase(v);
+    ++st_.operations; ++st_.circumcenters_inserted;
+    if(is_off_center) ++st_.off_centers_inserted;
+    auto fc = cdt_.incident_faces(v), done = fc;
+    do { fc->set_in_domain(true); } while(++fc != done);
+    free_steiner_.insert(v);
+    post_insert(v);
+    return true;
+  }
+
   void insert_steiner(Face_handle f, const Point& c, bool is_off_center)
   {
     if(!is_usable(c)) { ++st_.unrefinable_faces; return; }
+    if(try_insert_steiner_fast(f, c, is_off_center)) return;
     std::vector<Face_handle> zone; Face_set in_zone; std::vector<Edge> boundary;
     conflict_zone(f, c, zone, in_zone, boundary);
     // constrained boundary edges that c encroaches (Ruppert: diametral disk) or lies beyond (Chew: Lemma 3.5)
@@ -801,6 +833,8 @@ private:
   std::unordered_set<Vertex_handle, Handle_hash_function> frame_;
   std::unordered_set<Vertex_handle, Handle_hash_function> dead_; // removed vertices (queued handles may name them)
   std::set<std::pair<Vertex_handle, Vertex_handle> > stuck_;       // segments whose split point is unusable
+  std::vector<Face_handle> fast_faces_;                             // scratch of try_insert_steiner_fast
+  std::vector<Edge> fast_edges_;
 };
 
 } // namespace internal
