@@ -23,15 +23,6 @@
 
 namespace pd_test {
 
-/// A check that exposes a bug reported in /work/briefs/BUGS-traits.md and not fixed yet: it prints the failure
-/// and counts as a check but only fails the test when the environment variable CGAL_HC_STRICT_KNOWN_BUGS is set.
-#define PD_KNOWN_BUG_CHECK(id, cond, msg)                                                                 \
-  do {                                                                                                    \
-    if(std::getenv("CGAL_HC_STRICT_KNOWN_BUGS")) { CGAL_HC_CHECK_MSG(cond, "[known bug " id "] " << msg); } \
-    else { ++cgal_hc_test::checks_in_case();                                                              \
-           if(!(cond)) std::cerr << "  KNOWN BUG " id " (not counted as failure): " << #cond << "  " << msg  \
-                                 << std::endl; }                                                          \
-  } while(0)
 
 using pd_ref::Q;
 using pd_ref::QP;
