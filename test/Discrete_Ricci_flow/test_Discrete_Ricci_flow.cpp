@@ -593,6 +593,29 @@ CGAL_HC_TEST_CASE(flat_torus_from_lattice)
   CGAL_HC_CHECK(std::abs(metric.total_area() - std::abs((std::conj(w1) * w2).imag())) < 1e-10);
   // the flat metric is bad input for the hyperbolic embedding and vice versa
   CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(tm), RF::Ricci_flow_error);
+
+  // the other diagonals give obtuse, non-Delaunay triangles: the Penner class of that triangulation is another
+  // torus, the geometric initial flips (Gillespie-Springborn-Crane) recover the lattice's tau
+  Mesh obtuse = grid_torus(n, m, 3, 1, false);
+  auto lmap2 = obtuse.add_property_map<Mesh::Edge_index, double>("e:input_length", 0.0).first;
+  for(auto e : obtuse.edges()) {
+    const auto h = obtuse.halfedge(e);
+    const int a = int(obtuse.source(h)), b = int(obtuse.target(h));
+    int di = b / m - a / m, dj = b % m - a % m;
+    if(di > 1) di -= n;
+    if(di < -1) di += n;
+    if(dj > 1) dj -= m;
+    if(dj < -1) dj += m;
+    lmap2[e] = std::abs(double(di) / n * w1 + double(dj) / m * w2);
+  }
+  auto penner = RF::flat_metric(obtuse, RF::parameters::input_edge_length_map(lmap2));
+  auto geometric = RF::flat_metric(obtuse, RF::parameters::geometric_initial_flips(true, RF::parameters::input_edge_length_map(lmap2)));
+  CGAL_HC_CHECK(penner.converged() && geometric.converged());
+  CGAL_HC_CHECK(geometric.statistics().number_of_initial_flips > 0);
+  const std::complex<double> tau_p = Embedding(penner).lattice_parameter(), tau_g = Embedding(geometric).lattice_parameter();
+  CGAL_HC_CHECK_MSG(std::abs(tau_g - expected) < 1e-10, "geometric initial flips: tau = " << tau_g << ", expected " << expected);
+  CGAL_HC_CHECK_MSG(std::abs(tau_p - expected) > 1e-3, "Penner class of the obtuse triangulation: tau = " << tau_p);
+  CGAL_HC_CHECK(std::abs(geometric.total_area() - 0.8) < 1e-10);
 }
 
 // ------------------------------------------------------------------ other schemes and backgrounds

@@ -174,6 +174,8 @@ bool call_progress_any(const Callback& cb, const Flow_progress& p)
     - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians, default 1e-11),
     - `do_flip(b)`: keep the triangulation intrinsically Delaunay with Ptolemy flips (default true; vertex
       scaling only),
+    - `geometric_initial_flips(b)`: first make the input intrinsically Delaunay by metric-preserving flips
+      (default false; see `parameters::geometric_initial_flips()`),
     - `verbose(b)`: one line per iteration on `std::cerr`,
     - `callback(f)`: `f(const Flow_progress&)` after each iteration; return `false` to stop (status CANCELLED).
   \returns the result (status, statistics, intrinsic triangulation, conformal factors).
@@ -297,6 +299,25 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
     if(geo == Background_geometry::SPHERICAL && !(two_pi_chi - target_sum > gb_tol))
       throw Ricci_flow_error(os.str() + "; S^2 needs sum < 2 pi chi");
     target_area = std::abs(target_sum - two_pi_chi);
+  }
+
+  // ---- optional: make the input intrinsically Delaunay by geometric flips (its PL metric is unchanged)
+  const bool geometric_initial =
+    choose_parameter(get_parameter(np, internal_np::ricci_geometric_initial_flips), false) && scheme == Scheme::VERTEX_SCALING;
+  std::vector<E> initial_flips;
+  Mesh mesh_after_initial_flips;
+  std::vector<double> lambda_after_initial_flips;
+  if(geometric_initial) {
+    internal::Flow_engine<Point_3> eng0(m, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
+    eng0.geometric_flips = true;
+    for(E e : m.edges()) eng0.edge_data[e] = 0.5 * input_len[e];
+    eng0.compute_lengths();
+    eng0.compute_angles();
+    if(!eng0.make_delaunay()) throw Ricci_flow_error("the geometric Delaunay flips of the input did not terminate");
+    for(E e : m.edges()) input_len[e] = eng0.len[e];
+    initial_flips = eng0.flip_log;
+    res.stats_.number_of_initial_flips = initial_flips.size();
+    if(!initial_flips.empty()) { mesh_after_initial_flips = m; lambda_after_initial_flips = eng0.edge_data; }
   }
 
   // ---- initial state: a uniform scale making the triangles' total area about the target area
@@ -455,18 +476,30 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   }
   // the user's mesh: lengths of the input connectivity under the final conformal factors
   res.input_valid_ = true;
+  // Penner coordinates (at u = 0) of the input connectivity: the input half-lengths, or, after geometric initial
+  // flips, the Ptolemy images of the Delaunay triangulation's half-lengths flipped back in reverse order
+  std::vector<double> penner0(m.number_of_edges());
+  for(const auto& ec : edge_corr) penner0[ec.second] = 0.5 * input_len[ec.second];
+  if(!initial_flips.empty()) {
+    internal::Flow_engine<Point_3> back(mesh_after_initial_flips, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
+    back.edge_data = lambda_after_initial_flips;
+    back.compute_lengths();
+    back.compute_angles();
+    for(auto it = initial_flips.rbegin(); it != initial_flips.rend(); ++it) back.flip(*it);
+    for(const auto& ec : edge_corr) penner0[ec.second] = back.edge_data[ec.second];
+  }
   {
     for(const auto& ec : edge_corr) {
       const tm_halfedge h = halfedge(ec.first, tm);
       const std::size_t a = std::size_t(vmap[get(vim, source(h, tm))]), b = std::size_t(vmap[get(vim, target(h, tm))]);
       double l;
       if(scheme == Scheme::VERTEX_SCALING)
-        l = internal::length_from_lambda(geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * 0.5 * input_len[ec.second]);
+        l = internal::length_from_lambda(geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0[ec.second]);
       else
         l = eng.len[ec.second]; // no flips for the circle packings: same connectivity
       put(edge_length_out, ec.first, l);
     }
-    if(eng.flips > 0) {
+    if(eng.flips > 0 || !initial_flips.empty()) {
       // check the triangle inequalities of the input faces with the written lengths
       for(tm_face f : faces(tm)) {
         double l[3] = {0, 0, 0}; int i = 0;

@@ -20,6 +20,7 @@ namespace internal_np {
 enum ricci_background_geometry_t { ricci_background_geometry };
 enum ricci_scheme_t { ricci_scheme };
 enum ricci_edge_length_map_t { ricci_edge_length_map };
+enum ricci_geometric_initial_flips_t { ricci_geometric_initial_flips };
 } // namespace internal_np
 
 namespace Ricci_flow {
@@ -98,7 +99,8 @@ struct Flow_statistics
   /// step with the trapezoidal rule from the gradient (exact for a quadratic energy).
   std::vector<double> energy_history;
   double time_seconds = 0;                   ///< wall-clock time of the flow
-  std::size_t number_of_flips = 0;           ///< Ptolemy (intrinsic Delaunay) flips
+  std::size_t number_of_flips = 0;           ///< Ptolemy (intrinsic Delaunay) flips during the flow
+  std::size_t number_of_initial_flips = 0;   ///< geometric flips of the input (`geometric_initial_flips`)
   std::size_t number_of_symbolic_factorizations = 0; ///< Eigen analyzePattern calls (pattern changes)
   std::size_t number_of_factorizations = 0;  ///< Eigen numeric factorizations (one per Newton iteration)
   double factorization_seconds = 0;          ///< time spent in analyzePattern + factorize
@@ -127,6 +129,13 @@ CGAL_RICCI_FLOW_NAMED_PARAMETER(scheme, ricci_scheme_t)
 /// named parameter `input_edge_length_map(map [, np])`: a readable edge property map with the input edge
 /// lengths (default: Euclidean lengths from the vertex point map). Starts the flow from an intrinsic metric.
 CGAL_RICCI_FLOW_NAMED_PARAMETER(input_edge_length_map, ricci_edge_length_map_t)
+
+/// named parameter `geometric_initial_flips(bool [, np])` (default false; vertex scaling only): first make the
+/// input intrinsically Delaunay by geometric flips (which keep its piecewise-linear Euclidean metric), then flow
+/// with Ptolemy flips (Gillespie-Springborn-Crane 2021). The result then depends only on the input's metric,
+/// not on its triangulation; without it, the discrete conformal class is the Penner class of the input
+/// triangulation (Moebius invariant).
+CGAL_RICCI_FLOW_NAMED_PARAMETER(geometric_initial_flips, ricci_geometric_initial_flips_t)
 
 #undef CGAL_RICCI_FLOW_NAMED_PARAMETER
 

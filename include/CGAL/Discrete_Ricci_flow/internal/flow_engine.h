@@ -49,6 +49,10 @@ public:
   std::size_t flips = 0, max_flips = 0;
   int pattern_version = 0;
   std::vector<E> flip_queue;
+  // geometric mode (E^2, vertex scaling, u = 0): flips keep the piecewise-linear metric (the new diagonal of the
+  // unfolded quad, law of cosines) instead of applying Ptolemy; used to make the input intrinsically Delaunay
+  bool geometric_flips = false;
+  std::vector<E> flip_log; // edges flipped, in order
   std::vector<char> in_queue;
 
   Flow_engine(Mesh& mesh, Background_geometry g, Scheme s, bool flips_on)
@@ -150,7 +154,15 @@ public:
     // h1: b->c, h2: c->a, o1: a->d, o2: d->b
     const double lab = edge_data[e], lbc = edge_data[m.edge(h1)], lca = edge_data[m.edge(h2)],
                  lad = edge_data[m.edge(o1)], ldb = edge_data[m.edge(o2)];
-    edge_data[e] = (lca * ldb + lad * lbc) / lab;
+    if(geometric_flips) {
+      // the diagonal c-d of the quad unfolded along a-b: angle at a = angle(c a b) + angle(b a d)
+      const double theta_a = angle[h1] + angle[o2];
+      const double lac = len[m.edge(h2)], lad_ = len[m.edge(o1)];
+      const double lcd2 = lac * lac + lad_ * lad_ - 2 * lac * lad_ * std::cos(theta_a);
+      edge_data[e] = 0.5 * std::sqrt(lcd2 > 0 ? lcd2 : 0.0);
+    } else
+      edge_data[e] = (lca * ldb + lad * lbc) / lab;
+    flip_log.push_back(e);
     // rewire: h: d->c in face (h, h2, o1); o: c->d in face (o, o2, h1)
     if(m.halfedge(a) == o) m.set_halfedge(a, h2);
     if(m.halfedge(b) == h) m.set_halfedge(b, o2);
