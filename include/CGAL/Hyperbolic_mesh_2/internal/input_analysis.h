@@ -8,6 +8,7 @@
 
 #include <CGAL/Hyperbolic_mesh_2/mesh_types.h>
 #include <CGAL/Handle_hash_function.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
