@@ -707,6 +707,17 @@ CGAL_HC_TEST_CASE(boundary_geodesic_curvature)
     CGAL_HC_CHECK_MSG(err < 1e-9, "scheme " << int(sch) << ": curvature error (with border angles) " << err);
     CGAL_HC_CHECK(r.intrinsic_mesh().is_valid(false));
   }
+  // a hyperbolic polygon of area 1: K = 0 inside, turning angles (2 pi + 1) / n_border on the border
+  // (Gauss-Bonnet: sum of turning angles = 2 pi + area)
+  for(auto v : disk.vertices()) if(disk.is_border(v)) target[v] = (two_pi + 1.0) / double(nb);
+  {
+    auto r = RF::compute_metric(disk, target, CGAL::make_property_map(lengths));
+    CGAL_HC_CHECK_MSG(r.converged(), "hyperbolic polygon: " << RF::to_string(r.statistics().status));
+    double err, area; bool tri;
+    reference_curvature(r, err, area, tri);
+    CGAL_HC_CHECK_MSG(err < 1e-9, "hyperbolic polygon: curvature error " << err);
+    CGAL_HC_CHECK_MSG(std::abs(area - 1.0) < 1e-8, "hyperbolic polygon: area " << area);
+  }
   // the hyperbolic background needs sum of targets > 2 pi chi: zero targets are rejected
   CGAL_HC_CHECK_THROWS(RF::compute_metric(disk, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0), CGAL::make_property_map(lengths)),
                        RF::Ricci_flow_error);
