@@ -360,6 +360,24 @@ namespace {
 
 typedef std::array<std::pair<double, double>, 3> Face_key;
 
+/// a vertex base whose default-constructed point is (0, 0) instead of uninitialized doubles (see TODO T4)
+template <class Gt, class Vb = CGAL::Triangulation_vertex_base_2<Gt> >
+struct Initialized_vertex_base : public Vb
+{
+  typedef typename Vb::Face_handle Face_handle;
+  typedef typename Vb::Point Point;
+  template <class TDS2>
+  struct Rebind_TDS
+  {
+    typedef typename Vb::template Rebind_TDS<TDS2>::Other Vb2;
+    typedef Initialized_vertex_base<Gt, Vb2> Other;
+  };
+  Initialized_vertex_base() : Vb(Point(0, 0)) {}
+  Initialized_vertex_base(const Point& p) : Vb(p) {}
+  Initialized_vertex_base(const Point& p, Face_handle f) : Vb(p, f) {}
+  Initialized_vertex_base(Face_handle f) : Vb(Point(0, 0), f) {}
+};
+
 template <class HDT>
 std::set<Face_key> hyperbolic_faces(const HDT& h)
 {
@@ -379,7 +397,12 @@ std::set<Face_key> hyperbolic_faces(const HDT& h)
 CGAL_HC_TEST_CASE(hyperbolic_delaunay_triangulation_2_matches_cgal_ck_traits)
 {
   typedef CGAL::Poincare_disk_traits_2<Epick> Tr;
-  typedef CGAL::Hyperbolic_Delaunay_triangulation_2<Tr> HDT;
+  // TODO(BUGS-traits.md T4): CGAL evaluates Is_Delaunay_hyperbolic on infinite faces with the infinite vertex's
+  // default-constructed (uninitialized) point, on which the traits crash (SIGFPE in GMP). Until the header is
+  // fixed, this test uses a vertex base whose default point is (0, 0); the case
+  // is_Delaunay_hyperbolic_tolerates_the_infinite_vertex covers the bug itself.
+  typedef CGAL::Triangulation_data_structure_2<Initialized_vertex_base<Tr>, CGAL::Hyperbolic_triangulation_face_base_2<Tr> > Tds;
+  typedef CGAL::Hyperbolic_Delaunay_triangulation_2<Tr, Tds> HDT;
   typedef CGAL::Hyperbolic_Delaunay_triangulation_CK_traits_2<> CK_tr;
   typedef CGAL::Hyperbolic_Delaunay_triangulation_2<CK_tr> HDT_ck;
   typedef Epick::Point_2 P;
