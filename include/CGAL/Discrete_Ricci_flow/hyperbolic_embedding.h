@@ -87,15 +87,19 @@ inline Moebius isometry_from_pairs(bool hyperbolic, Cplx p1, Cplx q1, Cplx p2, C
     b, C = maximum spanning tree of the dual graph on the edges not in T, weighted by the length of the loop
     through the edge; the 2g remaining edges e_i = (u_i -> v_i) give the loops
     `gamma_i = T(b -> u_i) . e_i . T(v_i -> b)` (`homotopy_basis()`, halfedges of the intrinsic mesh);
-  - cut along the union of the loops (T u {e_i} pruned of its trees), which leaves a topological disk D;
-  - isometric layout of the triangles of D by breadth-first search with the cosine law, b at the origin
-    (`corner_position()`, `domain_boundary()`);
-  - deck transformations: the holonomy of each loop gamma_i (developing the metric along gamma_i), an
-    element of SU(1,1) (`deck_transformations()`), or a translation for the torus (`periods()`);
-  - the relator: the boundary of D read as a word in the loops; the product of the deck transformations in
-    that order is the identity (`relator()`, `relator_product()`);
-  - the side pairings: each maximal path of the cut graph appears twice on the boundary of D; the isometry
-    mapping one copy onto the other (`side_pairings()`).
+  - the fundamental domain D: the surface cut along a *compact* cut graph (the edges not crossed by a
+    shortest-path tree of the dual graph grown from the base face, pruned of dangling trees), laid out
+    isometrically (cosine law, breadth-first, in long double) with the base vertex at the origin
+    (`corner_position()`, `domain_boundary()`); every face stays within a few units of the origin, where double
+    coordinates are accurate;
+  - deck transformations: the holonomy of each loop gamma_i (developing the metric along gamma_i through D,
+    composing the side pairings crossed), an element of SU(1,1) (`deck_transformations()`), or a translation for
+    the torus (`periods()`);
+  - the relator: the boundary of the disk cut along the loops gamma_i (read combinatorially) as a word in the
+    loops; the product of the deck transformations in that order is the identity (`relator()`,
+    `relator_product()`, `relator_polygon()`);
+  - the side pairings of D: each maximal path of its cut graph appears twice on the boundary of D; the isometry
+    mapping one copy onto the other (`side_pairings()`), used for the tiling (`write_tiling_svg()`).
 
   The deck transformation of a based loop maps the lift of its start (in D) to the lift of its end, and its
   translation length `2 acosh(|trace| / 2)` is the length of the closed geodesic freely homotopic to the loop.
