@@ -193,12 +193,16 @@ private:
       Vertex_handle from = a;
       auto ia = radius.find(a), ib = radius.find(b);
       if(ia != radius.end() && ia->second < d / 3 + 1e-300) {
-        const Point p = gt_.construct_hyperbolic_point_on_segment_2_object()(pa, pb, FT(ia->second / d));
+        Point p;
+        try { p = gt_.construct_hyperbolic_point_on_segment_2_object()(pa, pb, FT(ia->second / d)); }
+        catch(const Poincare_disk_domain_error&) { continue; }
         Vertex_handle v = split_segment(a, b, p);
         if(v != Vertex_handle()) { from = v; ++st_.lopping_vertices; ++st_.operations; }
       }
       if(ib != radius.end() && ib->second < d / 3 + 1e-300) {
-        const Point p = gt_.construct_hyperbolic_point_on_segment_2_object()(pa, pb, FT(1.0 - ib->second / d));
+        Point p;
+        try { p = gt_.construct_hyperbolic_point_on_segment_2_object()(pa, pb, FT(1.0 - ib->second / d)); }
+        catch(const Poincare_disk_domain_error&) { continue; }
         if(split_segment(from, b, p) != Vertex_handle()) { ++st_.lopping_vertices; ++st_.operations; }
       }
     }
@@ -343,7 +347,10 @@ private:
            !forced_.count(key(s.first, s.second)))
           continue; // no longer encroached
         forced_.erase(key(s.first, s.second));
-        split_encroached_segment(s.first, s.second);
+        // constructions come before any change of the triangulation: a rounded point that leaves the disk
+        // (segments near the circle at infinity) only makes this segment unsplittable
+        try { split_encroached_segment(s.first, s.second); }
+        catch(const Poincare_disk_domain_error&) { stuck_.insert(key(s.first, s.second)); ++st_.unsplittable_segments; }
         continue;
       }
       if(bad_.empty()) return Refinement_status::SUCCESS;
@@ -355,7 +362,8 @@ private:
       const Face_badness b = crit_.badness(f);
       if(b == Face_badness::GOOD) continue;
       if(b == Face_badness::BAD_ANGLE && is_protected(f)) continue; // thesis Fig. 3.6: left to the lopped corner
-      refine_face(f, b);
+      try { refine_face(f, b); }
+      catch(const Poincare_disk_domain_error&) { ++st_.unrefinable_faces; } // a constructed point left the disk
     }
   }
 
