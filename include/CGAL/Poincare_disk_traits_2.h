@@ -446,7 +446,9 @@ public:
       {
         const Poincare_disk_internal::Circle_coefficients<NT> cc(px, py, qx, qy, rx, ry);
         const NT delta = cc.delta();
-        return combine(CGAL::sign(delta), cc.cosh2_numerator() - c2 * delta);
+        // cosh^2 h - c2 has the sign of (A - G)^2 - c2 Delta = (B^2 + C^2 - 4AG) - (c2 - 1) Delta: the same
+        // polynomial, written with sinh^2 h so that small radii do not cancel (c2 - 1 is exact for c2 in [1, 2]).
+        return combine(CGAL::sign(delta), cc.sinh2_numerator() - (c2 - NT(1)) * delta);
       }
       template <class NT>
       static Uncertain<Sign> combine(Uncertain<Sign> dsign, const NT& diff)
@@ -582,7 +584,10 @@ public:
       const double d = 2 * std::atanh(rq), tt = CGAL::to_double(t);
       const double f = std::tanh(tt * d / 2) / rq;
       const P r = to0.inverse().apply_unchecked(P(f * q0.x(), f * q0.y()));
-      return Point_2(FT(r.x()), FT(r.y()));
+      const Point_2 res(FT(r.x()), FT(r.y()));
+      Poincare_disk_internal::check_point_in_disk(res, "Construct_hyperbolic_point_on_segment_2 (result rounds onto "
+                                                       "the unit circle)");
+      return res;
     }
   };
 
