@@ -243,17 +243,36 @@ public:
   {
   public:
     typedef bool result_type;
+    /// false (and no exception) when a point is not a finite point of the open disk: CGAL's
+    /// Hyperbolic_Delaunay_triangulation_2 evaluates this predicate on its infinite faces too, whose infinite
+    /// vertex carries an arbitrary point.
     bool operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
+      if(bad_vertex(p, q, r) >= 0) return false;
       return Eval::eval(poly, p.x(), p.y(), q.x(), q.y(), r.x(), r.y()) == POSITIVE;
     }
     bool operator()(const Point_2& p0, const Point_2& p1, const Point_2& p2, int& ind) const
     {
-      if((*this)(p0, p1, p2)) return true;
-      ind = non_hyperbolic_edge(p0, p1, p2);
+      const int bad = bad_vertex(p0, p1, p2);
+      if(bad >= 0) { ind = (bad + 1) % 3; return false; } // an edge through the bad (infinite) vertex
+      if(Eval::eval(poly, p0.x(), p0.y(), p1.x(), p1.y(), p2.x(), p2.y()) == POSITIVE) return true;
+      ind = Eval::eval(edge_poly, p0.x(), p0.y(), p1.x(), p1.y(), p2.x(), p2.y());
       return false;
     }
   private:
+    static bool in_disk(const Point_2& p)
+    {
+      if constexpr(is_double) {
+        const double w = 1.0 + p.x() * p.x() + p.y() * p.y();
+        if(w < 1.9999999999999) return true;
+      }
+      return Poincare_disk_internal::is_in_open_disk(p);
+    }
+    static int bad_vertex(const Point_2& p, const Point_2& q, const Point_2& r)
+    {
+      return !in_disk(p) ? 0 : (!in_disk(q) ? 1 : (!in_disk(r) ? 2 : -1));
+    }
+
     struct Poly {
       template <class NT>
       auto operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
@@ -263,37 +282,39 @@ public:
 
     // The arc of the circumcircle outside the disk contains the point of the circle farthest from the origin,
     // in direction c (the Euclidean centre) seen from c. It lies on the arc between two consecutive vertices;
-    // the edge joining them is the answer. Exact, on rationals (not a hot path).
-    static int non_hyperbolic_edge(const Point_2& p0, const Point_2& p1, const Point_2& p2)
-    {
-      // exact field: the kernel's own FT when it is exact, rationals built exactly from doubles otherwise
-      typedef std::conditional_t<is_double, Exact_rational, FT> Q;
-      const Q x[3] = {Q(p0.x()), Q(p1.x()), Q(p2.x())};
-      const Q y[3] = {Q(p0.y()), Q(p1.y()), Q(p2.y())};
-      const Poincare_disk_internal::Circle_coefficients<Q> cc(x[0], y[0], x[1], y[1], x[2], y[2]);
-      if(cc.A == Q(0)) return 0; // Euclidean-collinear: the "circle" is a line; any answer is as good
-      // centre c = (-B, -C) / (2A); vectors from c to the vertices, scaled by 2A * sign(A) > 0
-      const int sa = CGAL::sign(cc.A) == POSITIVE ? 1 : -1;
-      Q vx[3], vy[3];
-      for(int i = 0; i < 3; ++i) { vx[i] = Q(sa) * (Q(2) * cc.A * x[i] + cc.B); vy[i] = Q(sa) * (Q(2) * cc.A * y[i] + cc.C); }
-      const Q dx = Q(-sa) * cc.B, dy = Q(-sa) * cc.C; // direction of c from the origin
-      auto cross = [](const Q& ax, const Q& ay, const Q& bx, const Q& by) { return CGAL::sign(ax * by - ay * bx); };
-      // d strictly counterclockwise between a and b (turning counterclockwise from a to b)
-      auto ccw_between = [&](int a, int b) {
-        const Sign ab = cross(vx[a], vy[a], vx[b], vy[b]);
-        const Sign ad = cross(vx[a], vy[a], dx, dy), db = cross(dx, dy, vx[b], vy[b]);
-        if(ab == POSITIVE) return ad == POSITIVE && db == POSITIVE;
-        return ad == POSITIVE || db == POSITIVE;
-      };
-      // walk the vertices counterclockwise around c
-      const bool ccw = CGAL::sign(cc.A) == POSITIVE;
-      const int order[3] = {0, ccw ? 1 : 2, ccw ? 2 : 1};
-      for(int k = 0; k < 3; ++k) {
-        const int a = order[k], b = order[(k + 1) % 3];
-        if(ccw_between(a, b)) return 3 - a - b; // the edge (a, b) is opposite vertex 3 - a - b
+    // the edge joining them is the answer. Signs of cross products: intervals first, then exact.
+    struct Edge_poly {
+      template <class NT>
+      int operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
+      {
+        const NT x[3] = {px, qx, rx}, y[3] = {py, qy, ry};
+        const Poincare_disk_internal::Circle_coefficients<NT> cc(px, py, qx, qy, rx, ry);
+        const bool ccw = (CGAL::sign(cc.A) == POSITIVE);
+        if(!ccw && CGAL::sign(cc.A) == ZERO) return 0; // Euclidean-collinear: a line, any answer is as good
+        // centre c = (-B, -C) / (2A); vectors from c to the vertices, scaled by 2A sign(A) > 0
+        const NT sa(ccw ? 1 : -1);
+        NT vx[3], vy[3];
+        for(int i = 0; i < 3; ++i) { vx[i] = sa * (NT(2) * cc.A * x[i] + cc.B); vy[i] = sa * (NT(2) * cc.A * y[i] + cc.C); }
+        const NT dx = -sa * cc.B, dy = -sa * cc.C; // direction of c from the origin
+        auto positive_cross = [](const NT& ax, const NT& ay, const NT& bx, const NT& by) -> bool {
+          return CGAL::sign(ax * by - ay * bx) == POSITIVE;
+        };
+        // d strictly counterclockwise between a and b (turning counterclockwise from a to b)
+        auto ccw_between = [&](int a, int b) -> bool {
+          const bool ab = positive_cross(vx[a], vy[a], vx[b], vy[b]);
+          const bool ad = positive_cross(vx[a], vy[a], dx, dy), db = positive_cross(dx, dy, vx[b], vy[b]);
+          return ab ? (ad && db) : (ad || db);
+        };
+        // walk the vertices counterclockwise around c
+        const int order[3] = {0, ccw ? 1 : 2, ccw ? 2 : 1};
+        for(int k = 0; k < 3; ++k) {
+          const int a = order[k], b = order[(k + 1) % 3];
+          if(ccw_between(a, b)) return 3 - a - b; // the edge (a, b) is opposite vertex 3 - a - b
+        }
+        return 0;
       }
-      return 0;
-    }
+    };
+    static constexpr Edge_poly edge_poly{};
   };
 
   /// Side of the geodesic line through p and q (ON_ORIENTED_BOUNDARY iff the query is on it). Consistent with
