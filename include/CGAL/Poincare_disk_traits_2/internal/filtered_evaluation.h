@@ -63,24 +63,23 @@ struct Exact_evaluator<double>
       -> typename Certain_type<decltype(f(Interval_nt_advanced(xs)...))>::type
   {
     CGAL_PD_COUNT(calls);
-    {
-      Protect_FPU_rounding<true> guard;
-      try {
-        const auto r = f(Interval_nt_advanced(xs)...);
-        if(is_certain(r)) return get_certain(r);
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
-    CGAL_PD_COUNT(interval_failures);
-    return make_certain(f(Exact_rational(xs)...));
+    return interval_then_exact(f, xs...);
   }
 
-  /// same, for callers whose static filter already failed (counted as a call already)
+  /// same, for callers whose static filter already failed (they counted the call)
   template <class F, class... Args>
   static auto eval_after_static_filter(const F& f, const Args&... xs)
       -> typename Certain_type<decltype(f(Interval_nt_advanced(xs)...))>::type
   {
     CGAL_PD_COUNT(static_filter_failures);
+    return interval_then_exact(f, xs...);
+  }
+
+private:
+  template <class F, class... Args>
+  static auto interval_then_exact(const F& f, const Args&... xs)
+      -> typename Certain_type<decltype(f(Interval_nt_advanced(xs)...))>::type
+  {
     {
       Protect_FPU_rounding<true> guard;
       try {
@@ -93,8 +92,6 @@ struct Exact_evaluator<double>
     return make_certain(f(Exact_rational(xs)...));
   }
 };
-
-template <class T> T make_certain_value(const T& t) { return t; }
 
 } // namespace Poincare_disk_internal
 } // namespace CGAL
