@@ -447,8 +447,10 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
       st.status = Flow_status::LINE_SEARCH_FAILED; break;
     }
     ++st.iterations;
+    // stagnation is only declared in the rounding regime (far from the solution Newton may need several
+    // iterations before the max error drops)
     if(err < 0.5 * best_err) { best_err = err; iterations_without_progress = 0; }
-    else ++iterations_without_progress;
+    else if(best_err < 1e-6) ++iterations_without_progress;
     st.error_history.push_back(err);
     st.energy_history.push_back(energy);
     Flow_progress pr; pr.iteration = st.iterations; pr.max_curvature_error = err; pr.step_length = t;

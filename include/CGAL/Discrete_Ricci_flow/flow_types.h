@@ -50,8 +50,8 @@ enum class Flow_status {
   NUMERICAL_FAILURE,       ///< the Hessian could not be factorized or a non-finite value appeared
   FLIP_LIMIT_REACHED,      ///< the Delaunay flip loop exceeded its budget
   CANCELLED,               ///< the progress callback asked to stop
-  STAGNATED                ///< five iterations without halving the error: the rounding floor of double
-                           ///< arithmetic is above the requested accuracy (the error reached is reported)
+  STAGNATED                ///< below 1e-6, five iterations without halving the error: the rounding floor of
+                           ///< double arithmetic is above the requested accuracy (the error reached is reported)
 };
 
 inline const char* to_string(Flow_status s)
