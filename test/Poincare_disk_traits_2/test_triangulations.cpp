@@ -360,24 +360,6 @@ namespace {
 
 typedef std::array<std::pair<double, double>, 3> Face_key;
 
-/// a vertex base whose default-constructed point is (0, 0) instead of uninitialized doubles (see TODO T4)
-template <class Gt, class Vb = CGAL::Triangulation_vertex_base_2<Gt> >
-struct Initialized_vertex_base : public Vb
-{
-  typedef typename Vb::Face_handle Face_handle;
-  typedef typename Vb::Point Point;
-  template <class TDS2>
-  struct Rebind_TDS
-  {
-    typedef typename Vb::template Rebind_TDS<TDS2>::Other Vb2;
-    typedef Initialized_vertex_base<Gt, Vb2> Other;
-  };
-  Initialized_vertex_base() : Vb(Point(0, 0)) {}
-  Initialized_vertex_base(const Point& p) : Vb(p) {}
-  Initialized_vertex_base(const Point& p, Face_handle f) : Vb(p, f) {}
-  Initialized_vertex_base(Face_handle f) : Vb(Point(0, 0), f) {}
-};
-
 template <class HDT>
 std::set<Face_key> hyperbolic_faces(const HDT& h)
 {
@@ -397,12 +379,7 @@ std::set<Face_key> hyperbolic_faces(const HDT& h)
 CGAL_HC_TEST_CASE(hyperbolic_delaunay_triangulation_2_matches_cgal_ck_traits)
 {
   typedef CGAL::Poincare_disk_traits_2<Epick> Tr;
-  // TODO(BUGS-traits.md T4): CGAL evaluates Is_Delaunay_hyperbolic on infinite faces with the infinite vertex's
-  // default-constructed (uninitialized) point, on which the traits crash (SIGFPE in GMP). Until the header is
-  // fixed, this test uses a vertex base whose default point is (0, 0); the case
-  // is_Delaunay_hyperbolic_tolerates_the_infinite_vertex covers the bug itself.
-  typedef CGAL::Triangulation_data_structure_2<Initialized_vertex_base<Tr>, CGAL::Hyperbolic_triangulation_face_base_2<Tr> > Tds;
-  typedef CGAL::Hyperbolic_Delaunay_triangulation_2<Tr, Tds> HDT;
+  typedef CGAL::Hyperbolic_Delaunay_triangulation_2<Tr> HDT;
   typedef CGAL::Hyperbolic_Delaunay_triangulation_CK_traits_2<> CK_tr;
   typedef CGAL::Hyperbolic_Delaunay_triangulation_2<CK_tr> HDT_ck;
   typedef Epick::Point_2 P;
@@ -631,12 +608,7 @@ CGAL_HC_TEST_CASE(is_Delaunay_hyperbolic_tolerates_the_infinite_vertex)
   const Tr tr;
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   const P p(0.1, 0.2), q(-0.3, 0.1);
-  if(!std::getenv("CGAL_HC_STRICT_KNOWN_BUGS")) {
-    // TODO(BUGS-traits.md T4): SIGFPE inside GMP (Exact_rational(NaN)); run on demand only until fixed
-    std::cerr << "  KNOWN BUG T4: Is_Delaunay_hyperbolic on non-finite points not run" << std::endl;
-    CGAL_HC_CHECK(!tr.is_Delaunay_hyperbolic_2_object()(p, q, P(0.99, 0.0))); // a non-compact circle, for the record
-    return;
-  }
+  // (bug T4 of BUGS-traits.md, fixed: this crashed with SIGFPE inside GMP, Exact_rational(NaN))
   for(const P& bad : {P(nan, nan), P(inf, 0), P(nan, 0.5), P(2, 3)}) {
     int ind = -1;
     bool r3 = true, r4 = true, threw = false;
