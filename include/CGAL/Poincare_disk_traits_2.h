@@ -13,6 +13,8 @@
 #include <CGAL/Poincare_disk_isometry_2.h>
 #include <CGAL/Poincare_disk_traits_2/internal/checks.h>
 #include <CGAL/Poincare_disk_traits_2/internal/constructions.h>
+#include <CGAL/Poincare_disk_traits_2/internal/exponential_map.h>
+#include <CGAL/Poincare_disk_traits_2/internal/model_conversions.h>
 #include <CGAL/Poincare_disk_traits_2/internal/filtered_evaluation.h>
 #include <CGAL/Poincare_disk_traits_2/internal/polynomials.h>
 #include <CGAL/enum.h>
@@ -104,14 +106,7 @@ private:
   // ---------------------------------------------------------------- input checks
   // Exact check that p is a finite point of the open disk. For double input the common case costs one
   // comparison on 1 + |p|^2, which the static filters compute anyway.
-  static void check(const Point_2& p, const char* where)
-  {
-    if constexpr(is_double) {
-      const double w = 1.0 + p.x() * p.x() + p.y() * p.y();
-      if(w < 1.9999999999999) return; // certainly |p| < 1 (and finite)
-    }
-    Poincare_disk_internal::check_point_in_disk(p, where);
-  }
+  static void check(const Point_2& p, const char* where) { Poincare_disk_internal::check_point_in_disk_fast(p, where); }
 
 public:
   // ================================================================ predicates
@@ -587,30 +582,8 @@ public:
   /// `refine_Delaunay_mesh_2` splits constrained edges on their geodesic.
   typedef Construct_hyperbolic_midpoint_2 Construct_midpoint_2;
 
-  /// The point of the geodesic segment pq at distance t d(p, q) from p (0 <= t <= 1); rounded (through double).
-  class Construct_hyperbolic_point_on_segment_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& p, const Point_2& q, const FT& t) const
-    {
-      check(p, "Construct_hyperbolic_point_on_segment_2"); check(q, "Construct_hyperbolic_point_on_segment_2");
-      typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
-      typedef Simple_cartesian<double>::Point_2 P;
-      const P pd(CGAL::to_double(p.x()), CGAL::to_double(p.y())), qd(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
-      const Iso to0 = Iso::translation_to_origin(pd);
-      const P q0 = to0(qd);
-      const double rq = std::sqrt(q0.x() * q0.x() + q0.y() * q0.y()); // tanh(d/2)
-      if(rq == 0) return p;
-      const double d = 2 * std::atanh(rq), tt = CGAL::to_double(t);
-      const double f = std::tanh(tt * d / 2) / rq;
-      const P r = to0.inverse().apply_unchecked(P(f * q0.x(), f * q0.y()));
-      const Point_2 res(FT(r.x()), FT(r.y()));
-      Poincare_disk_internal::check_point_in_disk(res, "Construct_hyperbolic_point_on_segment_2 (result rounds onto "
-                                                       "the unit circle)");
-      return res;
-    }
-  };
+  /// The point of the geodesic segment pq at distance t d(p, q) from p (rounded).
+  typedef Poincare_disk_internal::Construct_hyperbolic_point_on_segment_2<Kernel> Construct_hyperbolic_point_on_segment_2;
 
   /// The geodesic segment from p to q (an arc orthogonal to the unit circle, or a piece of a diameter).
   class Construct_hyperbolic_segment_2
@@ -760,87 +733,22 @@ public:
   // ---------------------------------------------------------------- models
 
   /// Klein image 2z / (1 + |z|^2) (rational).
-  class Construct_Klein_point_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& p) const
-    {
-      check(p, "Construct_Klein_point_2");
-      const FT w = Poincare_disk_internal::lift_w(p.x(), p.y());
-      return Point_2(FT(2) * p.x() / w, FT(2) * p.y() / w);
-    }
-  };
+  typedef Poincare_disk_internal::Construct_Klein_point_2<Kernel> Construct_Klein_point_2;
 
   /// Poincare point of a Klein point k: k / (1 + sqrt(1 - |k|^2)).
-  class Construct_point_from_Klein_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& k) const
-    {
-      Poincare_disk_internal::check_point_in_disk(k, "Construct_point_from_Klein_2");
-      const FT den = FT(1) + Poincare_disk_internal::sqrt_of(Poincare_disk_internal::lift_n(k.x(), k.y()));
-      return Point_2(k.x() / den, k.y() / den);
-    }
-  };
+  typedef Poincare_disk_internal::Construct_point_from_Klein_2<Kernel> Construct_point_from_Klein_2;
 
-  /// Hyperboloid lift (2x, 2y, 1 + |z|^2) / (1 - |z|^2) (rational), Minkowski product x1x2 + y1y2 - t1t2.
-  class Construct_hyperboloid_point_3
-  {
-  public:
-    typedef Point_3 result_type;
-    Point_3 operator()(const Point_2& p) const
-    {
-      check(p, "Construct_hyperboloid_point_3");
-      using namespace Poincare_disk_internal;
-      const FT n = lift_n(p.x(), p.y());
-      return Point_3(FT(2) * p.x() / n, FT(2) * p.y() / n, lift_w(p.x(), p.y()) / n);
-    }
-  };
+  /// Hyperboloid lift (2x, 2y, 1 + |z|^2) / (1 - |z|^2) (rational).
+  typedef Poincare_disk_internal::Construct_hyperboloid_point_3<Kernel> Construct_hyperboloid_point_3;
 
-  /// Poincare point of a point (X, Y, T) of the upper sheet of the hyperboloid: (X, Y) / (1 + T) (rational).
-  class Construct_point_from_hyperboloid_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_3& h) const
-    {
-      if(!(h.z() > FT(0)))
-        throw Poincare_disk_domain_error("Construct_point_from_hyperboloid_2: T must be positive");
-      const FT den = FT(1) + h.z();
-      const Point_2 p(h.x() / den, h.y() / den);
-      check(p, "Construct_point_from_hyperboloid_2");
-      return p;
-    }
-  };
+  /// Poincare point (X, Y) / (1 + T) of a point of the upper sheet of the hyperboloid (rational).
+  typedef Poincare_disk_internal::Construct_point_from_hyperboloid_2<Kernel> Construct_point_from_hyperboloid_2;
 
   /// Upper half-plane image by the Cayley map w = i (1 + z) / (1 - z) (rational).
-  class Construct_upper_half_plane_point_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& p) const
-    {
-      check(p, "Construct_upper_half_plane_point_2");
-      const FT den = (FT(1) - p.x()) * (FT(1) - p.x()) + p.y() * p.y();
-      return Point_2(FT(-2) * p.y() / den, Poincare_disk_internal::lift_n(p.x(), p.y()) / den);
-    }
-  };
+  typedef Poincare_disk_internal::Construct_upper_half_plane_point_2<Kernel> Construct_upper_half_plane_point_2;
 
-  /// Poincare point of a point (u, v), v > 0, of the upper half-plane: z = (w - i) / (w + i) (rational).
-  class Construct_point_from_upper_half_plane_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& w) const
-    {
-      if(!(w.y() > FT(0)) || !Poincare_disk_internal::is_finite_coordinate(w.x()))
-        throw Poincare_disk_domain_error("Construct_point_from_upper_half_plane_2: need a finite point with v > 0");
-      const FT u = w.x(), v = w.y(), den = u * u + (v + FT(1)) * (v + FT(1));
-      return Point_2((u * u + v * v - FT(1)) / den, FT(-2) * u / den);
-    }
-  };
+  /// Poincare point (w - i) / (w + i) of a point w of the upper half-plane (rational).
+  typedef Poincare_disk_internal::Construct_point_from_upper_half_plane_2<Kernel> Construct_point_from_upper_half_plane_2;
 
   /// Hyperbolic translations (`Isometry_2`): (a) takes a to the origin; (a, b) is the translation along the
   /// geodesic ab taking a to b.
@@ -864,48 +772,11 @@ public:
   // distance s d(a, b), and vector(a, midpoint(a, b)) * 2 = vector(a, b): CGAL's Mesh_2 relies on both when it
   // splits constrained edges near small input angles. Both are rounded (they need atanh / tanh).
 
-  /// log_a(b) for two points; the kernel's constructions for the other argument lists.
-  class Construct_vector_2
-  {
-  public:
-    typedef Vector_2 result_type;
-    Vector_2 operator()(const Point_2& a, const Point_2& b) const
-    {
-      check(a, "Construct_vector_2"); check(b, "Construct_vector_2");
-      typedef Simple_cartesian<double>::Point_2 P;
-      typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
-      const P ad(CGAL::to_double(a.x()), CGAL::to_double(a.y()));
-      // the translation taking a to 0 has a positive real derivative at a: directions are kept
-      const P b0 = Iso::translation_to_origin(ad).apply_unchecked(P(CGAL::to_double(b.x()), CGAL::to_double(b.y())));
-      const double r = std::hypot(b0.x(), b0.y());
-      if(r == 0) return Vector_2(FT(0), FT(0));
-      const double f = 2 * std::atanh((std::min)(r, 1.0 - 1e-16)) / r;
-      return Vector_2(FT(f * b0.x()), FT(f * b0.y()));
-    }
-    template <class... Args>
-    Vector_2 operator()(const Args&... args) const { return typename Kernel::Construct_vector_2()(args...); }
-  };
+  /// log_a(b): the direction of the geodesic from a to b at a, with length d(a, b) (rounded).
+  typedef Poincare_disk_internal::Construct_vector_2<Kernel> Construct_vector_2;
 
-  /// exp_a(v); throws `Poincare_disk_domain_error` if the result rounds onto the unit circle (|v| > ~37).
-  class Construct_translated_point_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& a, const Vector_2& v) const
-    {
-      check(a, "Construct_translated_point_2");
-      typedef Simple_cartesian<double>::Point_2 P;
-      typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
-      const double vx = CGAL::to_double(v.x()), vy = CGAL::to_double(v.y()), len = std::hypot(vx, vy);
-      if(len == 0) return a;
-      const double f = std::tanh(len / 2) / len;
-      const P ad(CGAL::to_double(a.x()), CGAL::to_double(a.y()));
-      const P r = Iso::translation_from_origin(ad).apply_unchecked(P(f * vx, f * vy));
-      const Point_2 res(FT(r.x()), FT(r.y()));
-      Poincare_disk_internal::check_point_in_disk(res, "Construct_translated_point_2 (result)");
-      return res;
-    }
-  };
+  /// exp_a(v): the point at distance |v| from a on the geodesic leaving a in direction v (rounded).
+  typedef Poincare_disk_internal::Construct_translated_point_2<Kernel> Construct_translated_point_2;
 
   typedef typename Kernel::Construct_scaled_vector_2      Construct_scaled_vector_2;
 

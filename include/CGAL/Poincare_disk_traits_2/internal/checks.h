@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace CGAL {
 
@@ -71,6 +72,18 @@ void check_point_in_disk(const Point_2& p, const char* where)
        << ") is not in the open unit disk (|p| < 1 and finite coordinates are required)";
     throw Poincare_disk_domain_error(os.str());
   }
+}
+
+/// `check_point_in_disk`, with a one-comparison fast path for double coordinates well inside the disk
+/// (1 + |p|^2 < 2 - 1e-13 means |p| < 1 and finite), used by the predicates on their hot path.
+template <class Point_2>
+void check_point_in_disk_fast(const Point_2& p, const char* where)
+{
+  if constexpr(std::is_same<typename std::decay<decltype(p.x())>::type, double>::value) {
+    const double w = 1.0 + p.x() * p.x() + p.y() * p.y();
+    if(w < 1.9999999999999) return;
+  }
+  check_point_in_disk(p, where);
 }
 
 } // namespace Poincare_disk_internal
