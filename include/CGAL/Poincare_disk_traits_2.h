@@ -650,48 +650,11 @@ public:
   /// The Euclidean circle that is the hyperbolic circle of centre c and radius r, with the radius given as
   /// `sinh2_half_radius = sinh^2(r/2)` (rational: exact on exact FT), or as the radius itself (rounded).
   /// Euclidean centre c / (1 + s n_c), squared radius |centre|^2 - (|c|^2 - s n_c) / (1 + s n_c), n_c = 1 - |c|^2.
-  class Construct_hyperbolic_circle_2
-  {
-  public:
-    typedef Circle_2 result_type;
-    Circle_2 operator()(const Point_2& c, const FT& sinh2_half_radius) const
-    {
-      check(c, "Construct_hyperbolic_circle_2");
-      if(!(sinh2_half_radius >= FT(0)))
-        throw Poincare_disk_domain_error("Construct_hyperbolic_circle_2: negative or NaN radius");
-      using namespace Poincare_disk_internal;
-      const FT s = sinh2_half_radius, nc = lift_n(c.x(), c.y()), den = FT(1) + s * nc;
-      const Point_2 e(c.x() / den, c.y() / den);
-      const FT r2 = e.x() * e.x() + e.y() * e.y() - (c.x() * c.x() + c.y() * c.y() - s * nc) / den;
-      return Circle_2(e, r2);
-    }
-    Circle_2 from_radius(const Point_2& c, double radius) const
-    {
-      const double sh = std::sinh(radius / 2);
-      return (*this)(c, FT(sh * sh));
-    }
-  };
+  typedef Poincare_disk_internal::Construct_hyperbolic_circle_2<Kernel> Construct_hyperbolic_circle_2;
 
   /// Hyperbolic centre and radius of a Euclidean circle contained in the open unit disk (Lemma 3.3 of the thesis);
   /// throws `Poincare_disk_domain_error` if the circle is not inside the disk. Rounded.
-  class Construct_hyperbolic_circle_from_Euclidean_2
-  {
-  public:
-    typedef std::pair<Point_2, FT> result_type;
-    std::pair<Point_2, FT> operator()(const Circle_2& circle) const
-    {
-      const double cx = CGAL::to_double(circle.center().x()), cy = CGAL::to_double(circle.center().y());
-      const double R = std::sqrt(CGAL::to_double(circle.squared_radius())), c = std::hypot(cx, cy);
-      if(!(c + R < 1.0))
-        throw Poincare_disk_domain_error("Construct_hyperbolic_circle_from_Euclidean_2: circle not inside the disk");
-      if(c == 0) return std::make_pair(Point_2(FT(0), FT(0)), FT(2 * std::atanh(R)));
-      // the diameter of the circle on the line through the origin and its centre is a hyperbolic diameter
-      const double ux = cx / c, uy = cy / c;
-      const Point_2 a(FT((c - R) * ux), FT((c - R) * uy)), b(FT((c + R) * ux), FT((c + R) * uy));
-      const Point_2 m = Construct_hyperbolic_midpoint_2()(a, b);
-      return std::make_pair(m, FT(CGAL::to_double(Compute_hyperbolic_distance_2()(a, b)) / 2));
-    }
-  };
+  typedef Poincare_disk_internal::Construct_hyperbolic_circle_from_Euclidean_2<Self> Construct_hyperbolic_circle_from_Euclidean_2;
 
   /// Intersection of two geodesic segments given by their endpoints (`Segment_2`), as CGAL's
   /// `Constrained_triangulation_2` with `Exact_predicates_tag` asks for it: the intersection of the two Klein

@@ -23,8 +23,6 @@ class Construct_hyperbolic_point_on_segment_2
 public:
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
-  typedef typename K::Point_3 Point_3;
-  typedef typename K::Vector_2 Vector_2;
   typedef Point_2 result_type;
   Point_2 operator()(const Point_2& p, const Point_2& q, const FT& t) const
   {
@@ -53,7 +51,6 @@ class Construct_vector_2
 public:
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
-  typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_2 Vector_2;
   typedef Vector_2 result_type;
   Vector_2 operator()(const Point_2& a, const Point_2& b) const
@@ -80,7 +77,6 @@ class Construct_translated_point_2
 public:
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
-  typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_2 Vector_2;
   typedef Point_2 result_type;
   Point_2 operator()(const Point_2& a, const Vector_2& v) const
