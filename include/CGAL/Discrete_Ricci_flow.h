@@ -10,5 +10,6 @@
 #include <CGAL/Discrete_Ricci_flow/flow_types.h>
 #include <CGAL/Discrete_Ricci_flow/compute_metric.h>
 #include <CGAL/Discrete_Ricci_flow/hyperbolic_embedding.h>
+#include <CGAL/Discrete_Ricci_flow/Bolza_surface_mesh.h>
 
 #endif // CGAL_DISCRETE_RICCI_FLOW_H
