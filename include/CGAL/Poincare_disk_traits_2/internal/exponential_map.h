@@ -16,34 +16,6 @@
 namespace CGAL {
 namespace Poincare_disk_internal {
 
-/// The point of the geodesic segment pq at distance t d(p, q) from p (0 <= t <= 1); rounded (through double).
-template <class K>
-class Construct_hyperbolic_point_on_segment_2
-{
-public:
-  typedef typename K::FT FT;
-  typedef typename K::Point_2 Point_2;
-  typedef Point_2 result_type;
-  Point_2 operator()(const Point_2& p, const Point_2& q, const FT& t) const
-  {
-    check_point_in_disk_fast(p, "Construct_hyperbolic_point_on_segment_2"); check_point_in_disk_fast(q, "Construct_hyperbolic_point_on_segment_2");
-    typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
-    typedef Simple_cartesian<double>::Point_2 P;
-    const P pd(CGAL::to_double(p.x()), CGAL::to_double(p.y())), qd(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
-    const Iso to0 = Iso::translation_to_origin(pd);
-    const P q0 = to0(qd);
-    const double rq = std::sqrt(q0.x() * q0.x() + q0.y() * q0.y()); // tanh(d/2)
-    if(rq == 0) return p;
-    const double d = 2 * std::atanh(rq), tt = CGAL::to_double(t);
-    const double f = std::tanh(tt * d / 2) / rq;
-    const P r = to0.inverse().apply_unchecked(P(f * q0.x(), f * q0.y()));
-    const Point_2 res(FT(r.x()), FT(r.y()));
-    check_point_in_disk(res, "Construct_hyperbolic_point_on_segment_2 (result rounds onto "
-                                                     "the unit circle)");
-    return res;
-  }
-};
-
 /// log_a(b) for two points; the kernel's constructions for the other argument lists.
 template <class K>
 class Construct_vector_2
@@ -92,6 +64,22 @@ public:
     const Point_2 res(FT(r.x()), FT(r.y()));
     check_point_in_disk(res, "Construct_translated_point_2 (result)");
     return res;
+  }
+};
+
+/// The point of the geodesic segment pq at distance t d(p, q) from p (0 <= t <= 1): exp_p(t log_p(q)); rounded
+/// (through double). Throws `Poincare_disk_domain_error` if the result rounds onto the unit circle.
+template <class K>
+class Construct_hyperbolic_point_on_segment_2
+{
+public:
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  typedef Point_2 result_type;
+  Point_2 operator()(const Point_2& p, const Point_2& q, const FT& t) const
+  {
+    const typename K::Vector_2 v = Construct_vector_2<K>()(p, q);
+    return Construct_translated_point_2<K>()(p, typename K::Vector_2(t * v.x(), t * v.y()));
   }
 };
 
