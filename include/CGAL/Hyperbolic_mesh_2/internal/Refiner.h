@@ -480,15 +480,22 @@ private:
         return false;
       }
     }
-    Vertex_handle v = cdt_.star_hole(c, fast_edges_.begin(), fast_edges_.end(), fast_faces_.begin(), fast_faces_.end());
-    dead_.erase(v);
+    after_steiner_insertion(
+        cdt_.star_hole(c, fast_edges_.begin(), fast_edges_.end(), fast_faces_.begin(), fast_faces_.end()),
+        is_off_center);
+    return true;
+  }
+
+  // bookkeeping after a circumcenter / off-center v was inserted in the domain
+  void after_steiner_insertion(Vertex_handle v, bool is_off_center)
+  {
+    dead_.erase(v); // its memory may be a removed vertex's: queue entries naming it are alive (and re-checked)
     ++st_.operations; ++st_.circumcenters_inserted;
     if(is_off_center) ++st_.off_centers_inserted;
     auto fc = cdt_.incident_faces(v), done = fc;
     do { fc->set_in_domain(true); } while(++fc != done);
     free_steiner_.insert(v);
     post_insert(v);
-    return true;
   }
 
   void insert_steiner(Face_handle f, const Point& c, bool is_off_center)
@@ -549,14 +556,7 @@ private:
       inside = in_zone.count(loc) > 0 || in_zone.count(loc->neighbor(li)) > 0;
     }
     if(!inside) { ++st_.unrefinable_faces; return; } // on a vertex, or not visible after rounding
-    Vertex_handle v = cdt_.insert(c, lt, loc, li);
-    dead_.erase(v); // its memory may be a removed vertex's: queue entries naming it are alive (and re-checked)
-    ++st_.operations; ++st_.circumcenters_inserted;
-    if(is_off_center) ++st_.off_centers_inserted;
-    auto fc = cdt_.incident_faces(v), done = fc;
-    do { fc->set_in_domain(true); } while(++fc != done);
-    free_steiner_.insert(v);
-    post_insert(v);
+    after_steiner_insertion(cdt_.insert(c, lt, loc, li), is_off_center);
   }
 
   // runs `split` (which may destroy f) and queues f's vertex triple again: f is re-examined if it survived
