@@ -71,7 +71,7 @@ int main(int argc, char** argv)
 {
   const std::size_t max_faces = argc > 1 ? std::size_t(std::atol(argv[1])) : 1500000;
   const std::string cgal = std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/";
-  const std::string shared = std::string(CGAL_HC_SHARED_DATA_DIR) + "/meshes/";
+  const std::string shared = std::string(CGAL_HC_DATA_DIR) + "/meshes/";
   try {
     for(const std::string& f : {cgal + "eight.off", cgal + "elephant.off", shared + "elephant_cid.obj", cgal + "refined_elephant.off"}) {
       Mesh m;

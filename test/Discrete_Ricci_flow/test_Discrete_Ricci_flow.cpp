@@ -33,7 +33,7 @@ static Mesh read_mesh(const std::string& path)
   return m;
 }
 static std::string cgal_mesh(const std::string& name) { return std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/" + name; }
-static std::string shared_mesh(const std::string& name) { return std::string(CGAL_HC_SHARED_DATA_DIR) + "/meshes/" + name; }
+static std::string shared_mesh(const std::string& name) { return std::string(CGAL_HC_DATA_DIR) + "/meshes/" + name; }
 
 // independent angle of a triangle at the corner opposite to a, in long double: the Euclidean cosine law, and for
 // H^2 / S^2 the half-angle form of the cosine law, tan^2(A/2) = f(s-b) f(s-c) / (f(s) f(s-a)) with f = sinh / sin

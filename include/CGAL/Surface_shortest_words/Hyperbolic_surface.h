@@ -5,6 +5,7 @@
 #ifndef CGAL_SURFACE_SHORTEST_WORDS_HYPERBOLIC_SURFACE_H
 #define CGAL_SURFACE_SHORTEST_WORDS_HYPERBOLIC_SURFACE_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/Surface_shortest_words/internal/layout.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -34,23 +35,9 @@ template <class G, class H>
 bool is_valid_handle(const G&, const H&) { return true; }
 } // namespace internal
 
-/// \ingroup PkgSurfaceShortestWordsRef
-/// Thrown when the mesh or its edge lengths do not define a closed hyperbolic surface (open or non-triangle
-/// mesh, triangle inequality violated, angle sum at a vertex different from 2 pi, genus < 2).
-class Invalid_metric_error : public std::invalid_argument
-{
-public:
-  explicit Invalid_metric_error(const std::string& w) : std::invalid_argument(w) {}
-};
-
-/// \ingroup PkgSurfaceShortestWordsRef
-/// Thrown when a path is not a path on the mesh (consecutive points not in a common face, invalid handle or
-/// parameter), or when a closed path (loop) is required and the path is open.
-class Invalid_path_error : public std::invalid_argument
-{
-public:
-  explicit Invalid_path_error(const std::string& w) : std::invalid_argument(w) {}
-};
+/// the package's exceptions are the common ones (`<CGAL/Hyperbolic_geometry_errors.h>`)
+using CGAL::Invalid_metric_error;
+using CGAL::Invalid_path_error;
 
 /// \ingroup PkgSurfaceShortestWordsRef
 /// Thrown when a computation needs more precision than double arithmetic offers (the lifted end point of a

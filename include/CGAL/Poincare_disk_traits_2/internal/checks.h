@@ -6,6 +6,7 @@
 #ifndef CGAL_POINCARE_DISK_TRAITS_2_INTERNAL_CHECKS_H
 #define CGAL_POINCARE_DISK_TRAITS_2_INTERNAL_CHECKS_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
@@ -17,14 +18,6 @@
 #include <type_traits>
 
 namespace CGAL {
-
-/// Thrown when a point given as a point of the Poincare disk is not in the open unit disk
-/// (|p| >= 1) or has a non-finite coordinate.
-class Poincare_disk_domain_error : public std::domain_error
-{
-public:
-  explicit Poincare_disk_domain_error(const std::string& what) : std::domain_error(what) {}
-};
 
 namespace Poincare_disk_internal {
 
