@@ -148,10 +148,19 @@ public:
   }
   /// total hyperbolic area, summed over the faces (4 pi (g - 1) for a smooth metric, by Gauss-Bonnet)
   double area() const { double a = 0; for(face_descriptor f : faces(tm_)) a += face_area(f); return a; }
-  /// true if the edge of `h` is intrinsically Delaunay: the two angles opposite to it sum to at most pi
+  /// true if the edge of `h` is intrinsically Delaunay: the circumcircle of one of its faces does not contain
+  /// the opposite vertex of the other. For hyperbolic triangles this is: the two angles opposite to the edge
+  /// sum to at most the four other corner angles of the quadrilateral (the sums are equal on a circle; the
+  /// Euclidean rule "at most pi" is weaker, since a hyperbolic quadrilateral's angles sum to less than 2 pi).
+  /// Decided in floating point, up to 1e-12 relative: for an exact decision use the traits' in-circle
+  /// predicate on the lifted quadrilateral (`chart()` and `neighbor_apex()`).
   bool is_delaunay(halfedge_descriptor h) const
   {
-    return angle_opposite(h) + angle_opposite(opposite(h, tm_)) <= CGAL_PI * (1 + 1e-12);
+    const halfedge_descriptor o = opposite(h, tm_);
+    const double opposite_sum = angle_opposite(h) + angle_opposite(o);
+    const double other_sum = angle_at_target(h) + angle_at_target(prev(h, tm_)) +
+                             angle_at_target(o) + angle_at_target(prev(o, tm_));
+    return opposite_sum <= other_sum + 1e-12 * (opposite_sum + other_sum);
   }
 
   // ---------------------------------------------------------------- charts and transitions
