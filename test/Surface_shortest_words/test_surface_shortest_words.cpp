@@ -21,6 +21,7 @@
 #include <cmath>
 #include <map>
 #include <queue>
+#include <memory>
 #include <random>
 
 namespace SSW = CGAL::Surface_shortest_words;
@@ -105,7 +106,8 @@ struct Cayley_ball
   {
     const Isometry n = f.normalized();
     const double a2 = n.alpha_real() * n.alpha_real() + n.alpha_imag() * n.alpha_imag();
-    return (long long)std::llround(a2 * 1e4);
+    const double k = a2 * 1e4;
+    return std::isfinite(k) && std::abs(k) < 1e15 ? (long long)std::llround(k) : 0; // no overflow of kk below
   }
   long find(const Isometry& f) const
   {
@@ -589,6 +591,145 @@ CGAL_HC_TEST_CASE(ricci_flow_meshes_translation_lengths_and_words)
     }
   }
 }
+
+// issue 10 item 3: the cut and paste to a canonical system succeeds at every base vertex of eight, elephant
+// and anchor (Ricci-flow metric, greedy basis of the shared layer), and the canonical relator written in the
+// greedy loops is the greedy relator (a free-group identity: the substitution is an automorphism)
+CGAL_HC_TEST_CASE(canonical_system_at_every_base_vertex)
+{
+  typedef CGAL::Ricci_flow::Discrete_metric<CGAL::Epick::Point_3> Metric;
+  typedef Metric::Mesh IMesh;
+  namespace HS = CGAL::Hyperbolic_surface_2;
+  for(const char* name : {"/meshes/eight.off", "/meshes/elephant.off", "/meshes/anchor.off"}) {
+    IMesh input;
+    CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_CGAL_DATA_DIR) + name, input));
+    const Metric metric = CGAL::Ricci_flow::hyperbolic_uniformization(input);
+    const IMesh& m = metric.intrinsic_mesh();
+    long ok = 0, failed = 0;
+    for(IMesh::Vertex_index v : m.vertices()) {
+      const HS::Homotopy_basis<IMesh> basis(m, v, metric.edge_length_map());
+      bool good = false;
+      try {
+        const auto& c = basis.canonical_change();
+        const SSW::Word img = SSW::internal::substitute(SSW::internal::canonical_relator(basis.genus()), c.new_in_old);
+        good = img == SSW::internal::free_reduce(basis.relator());
+        for(int i = 1; good && i <= 2 * basis.genus(); ++i)
+          good = SSW::internal::substitute(SSW::internal::substitute(SSW::Word{i}, c.old_in_new), c.new_in_old) == SSW::Word{i};
+      } catch(const std::exception& e) {
+        if(failed < 3) std::cerr << "  " << name << ": " << e.what() << std::endl;
+      }
+      (good ? ok : failed)++;
+    }
+    std::cout << "  " << name << " (genus " << metric.genus() << "): canonical system at " << ok << " of "
+              << m.number_of_vertices() << " base vertices" << std::endl;
+    CGAL_HC_CHECK(failed == 0 && ok > 0);
+  }
+}
 #endif
+
+
+// issue 10: words of loops along the polygon sides (where Dehn's algorithm is not enough) are shortest, and
+// loops along a generator at the base point, from both sides, give the right element (CGAL's oracle)
+CGAL_HC_TEST_CASE(issue10_words_along_generators_shortest_and_right)
+{
+  {
+    RPS S(3, 3);
+    Surface s(S.mesh, S.length);
+    Solver solver(s, S.base, S.generators);
+    // a1 b1 a1^-1 b1^-1 a2 b2 b2 a2^-1 b2^-1 a3 b3 a3^-1 (the 12-gon's own sides): a 10-letter word
+    const SSW::Word w{1, 2, -1, -2, 3, 4, 4, -3, -4, 5, 6, -5};
+    const auto hs = realize(S, w);
+    const auto res = solver.solve(vertex_path(s, hs));
+    CGAL_HC_CHECK_MSG(res.word.size() == 10, SSW::to_string(res.word));
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+    CGAL_HC_CHECK(cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res.word))));
+    const SSW::Word ten{6, 5, -6, -5, 4, 2, 1, -2, -1, 6}; // the issue's 10-letter word: the same element
+    CGAL_HC_CHECK(cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, realize(S, ten))));
+  }
+  for(int g : {2, 3}) {
+    RPS S(g, 3);
+    Surface s(S.mesh, S.length);
+    for(bool computed : {false, true}) {
+      std::unique_ptr<Solver> solver(computed ? new Solver(s, S.base) : new Solver(s, S.base, S.generators));
+      CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+      std::mt19937 rng(300 + g);
+      int n = 0;
+      for(int i = 0; i < 2 * g; ++i)
+        for(int sign : {1, -1}) {
+          // along generator i (forwards or backwards), then a random loop, then along generator i again
+          std::vector<Mesh::Halfedge_index> hs;
+          const auto& gi = solver->generator(std::size_t(i));
+          auto along = [&](int sg) {
+            if(sg > 0) hs.insert(hs.end(), gi.begin(), gi.end());
+            else for(auto it = gi.rbegin(); it != gi.rend(); ++it) hs.push_back(S.mesh.opposite(*it));
+          };
+          along(sign);
+          const auto mid = random_loop(S.mesh, S.base, 5 + rng() % 40, rng);
+          hs.insert(hs.end(), mid.begin(), mid.end());
+          along(rng() % 2 ? 1 : -1);
+          const auto res = solver->solve(vertex_path(s, hs));
+          CGAL_HC_CHECK_MSG(res.word.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                             : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver->realize(res.word))),
+                            "genus " << g << " generator " << i << " word " << solver->word_to_string(res.word));
+          CGAL_HC_CHECK(solver->reduce(res.word) == res.word);
+          ++n;
+        }
+      CGAL_HC_CHECK(n == 4 * g);
+    }
+  }
+}
+
+// issue 12: bad generators and base vertices throw; the loop iteration reports convergence honestly
+CGAL_HC_TEST_CASE(issue12_bad_solver_input_and_false_convergence)
+{
+  RPS S(2, 3);
+  Surface s(S.mesh, S.length);
+  std::vector<std::vector<Mesh::Halfedge_index> > gens = S.generators;
+  gens[0][0] = Mesh::Halfedge_index(1000000);
+  CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), SSW::Invalid_generators_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, Mesh::null_vertex(), S.generators), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, Mesh::Vertex_index(1000000)), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, Mesh::null_vertex()), CGAL::Invalid_input_error);
+  // a loop through a non-base vertex, shortened freely: 2 iterations are not enough to converge
+  std::mt19937 rng(9);
+  const auto hs = random_loop(S.mesh, S.base, 60, rng);
+  const Path loop = vertex_path(s, hs);
+  const auto full = SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(200));
+  const auto two = SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(2));
+  CGAL_HC_CHECK(two.iterations <= 2);
+  if(two.converged) CGAL_HC_CHECK_MSG(std::abs(two.length - full.length) <= 1e-9 * (1 + full.length), two.length << " " << full.length);
+  if(std::abs(two.length - full.length) > 1e-9 * (1 + full.length)) CGAL_HC_CHECK(!two.converged);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, loop, std::nan("")), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, loop, SSW::parameters::tolerance(std::nan(""))), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(0)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::vertex_snap(0.3)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::max_lift_distance(-1.0)), CGAL::Invalid_option_error);
+  // the named parameters reach the computation: a tiny lift bound makes the single chart impossible
+  const auto a = SSW::shortest_homotopic_loop(s, loop, SSW::parameters::tolerance(1e-6, CGAL::parameters::number_of_iterations(50)));
+  CGAL_HC_CHECK(a.iterations <= 50);
+  CGAL_HC_CHECK(std::abs(a.length - full.length) <= 1e-4 * (1 + full.length));
+}
+
+// words of random loops of 10 to 10^5 edges: geodesic (independent check: not longer than a word from
+// Dehn's algorithm, fixed by the reducer's own acceptor on windows) and the right element (CGAL's oracle)
+CGAL_HC_TEST_CASE(long_random_loops_right_element)
+{
+  RPS S(2, 4);
+  Surface s(S.mesh, S.length);
+  Solver solver(s, S.base, S.generators);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+  std::mt19937 rng(4242);
+  for(std::size_t len : {10, 1000, 100000}) {
+    const auto hs = random_loop(S.mesh, S.base, len, rng);
+    const auto res = solver.solve(vertex_path(s, hs));
+    CGAL_HC_CHECK(res.word.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                   : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res.word))));
+    CGAL_HC_CHECK(SSW::internal::dehn_reduce(res.word, solver.relator()).size() == res.word.size());
+    if(!res.used_geometry) CGAL_HC_CHECK(!res.geometry_status.empty());
+    std::cout << "  loop of " << len << " edges: word of " << res.word.size() << " letters, geometry "
+              << (res.used_geometry ? "used" : "not used (" + res.geometry_status + ")") << std::endl;
+  }
+}
 
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }
