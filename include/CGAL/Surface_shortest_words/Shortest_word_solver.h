@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <queue>
 #include <set>
@@ -23,6 +24,31 @@
 
 namespace CGAL {
 namespace Surface_shortest_words {
+namespace internal {
+// halfedge -> int (absent: -1): a vector by index for Surface_mesh, a hash map for other graphs
+template <class TriangleMesh>
+class Halfedge_int_map
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor H;
+  std::unordered_map<H, int> m_;
+public:
+  explicit Halfedge_int_map(const TriangleMesh&) {}
+  void clear() { m_.clear(); }
+  void set(H h, int v) { m_[h] = v; }
+  int get(H h) const { auto it = m_.find(h); return it == m_.end() ? -1 : it->second; }
+};
+template <class P>
+class Halfedge_int_map<CGAL::Surface_mesh<P> >
+{
+  typedef typename CGAL::Surface_mesh<P>::Halfedge_index H;
+  std::vector<int> v_;
+public:
+  explicit Halfedge_int_map(const CGAL::Surface_mesh<P>& m) : v_(m.number_of_halfedges() + m.number_of_removed_halfedges(), -1) {}
+  void clear() { std::fill(v_.begin(), v_.end(), -1); }
+  void set(H h, int v) { v_.at(std::size_t(h)) = v; }
+  int get(H h) const { return std::size_t(h) < v_.size() ? v_[std::size_t(h)] : -1; }
+};
+} // namespace internal
 
 /// \ingroup PkgSurfaceShortestWordsRef
 /// Thrown when the given loops are not a canonical system of loops through the base vertex (an
@@ -135,7 +161,7 @@ public:
   Shortest_word_solver(const Surface& surface, vertex_descriptor base,
                        const std::vector<std::vector<halfedge_descriptor> >& generators,
                        const Shortest_word_options& options = Shortest_word_options())
-    : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options)
+    : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options), exit_side_(surface.mesh())
   {
     check_base();
     check_options(opt_.path_options);
@@ -175,7 +201,7 @@ public:
   */
   Shortest_word_solver(const Surface& surface, vertex_descriptor base,
                        const Shortest_word_options& options = Shortest_word_options())
-    : s_(surface), tm_(surface.mesh()), p_(base), opt_(options)
+    : s_(surface), tm_(surface.mesh()), p_(base), opt_(options), exit_side_(surface.mesh())
   {
     check_base();
     check_options(opt_.path_options);
@@ -241,10 +267,19 @@ private:
   {
     if(opt_.shorten_generators) {
       for(std::size_t i = 0; i < gens_.size(); ++i) {
-        Shortest_path_result<TriangleMesh> r =
-          shortest_loop_through_base(s_, s_.path_from_halfedges(gens_[i]), opt_.path_options);
-        short_gens_.push_back(r.path);
-        short_lengths_.push_back(r.length);
+        try {
+          Shortest_path_result<TriangleMesh> r =
+            shortest_loop_through_base(s_, s_.path_from_halfedges(gens_[i]), opt_.path_options);
+          short_gens_.push_back(r.path);
+          short_lengths_.push_back(r.length);
+          short_status_.push_back(std::string());
+        } catch(const Precision_error& e) {
+          // a long computed generator (a concatenation of greedy loops): its shortest loop is beyond double
+          // precision; the words do not need it
+          short_gens_.push_back(Path());
+          short_lengths_.push_back(std::numeric_limits<double>::quiet_NaN());
+          short_status_.push_back(e.what());
+        }
       }
     }
   }
@@ -254,8 +289,17 @@ public:
   int genus() const { return g_; }
   vertex_descriptor base() const { return p_; }
   const std::vector<halfedge_descriptor>& generator(std::size_t i) const { return gens_[i]; }
-  /// the shortest loop through p homotopic to generator i (if `shorten_generators`)
-  const Path& shortened_generator(std::size_t i) const { return short_gens_.at(i); }
+  /// true if the shortest loop through p homotopic to generator i was computed (`shorten_generators`, and
+  /// within double precision; otherwise `shortened_generator_status(i)` says why)
+  bool has_shortened_generator(std::size_t i) const { return i < short_gens_.size() && short_status_[i].empty(); }
+  const std::string& shortened_generator_status(std::size_t i) const { return short_status_.at(i); }
+  /// the shortest loop through p homotopic to generator i. \throws Precision_error if it was not computed
+  const Path& shortened_generator(std::size_t i) const
+  {
+    if(!has_shortened_generator(i)) throw Precision_error("Shortest_word_solver: shortened generator not available");
+    return short_gens_[i];
+  }
+  /// its length (NaN if not computed)
   double shortened_generator_length(std::size_t i) const { return short_lengths_.at(i); }
   /// the relator read around the disk (a1 b1 a1^-1 b1^-1 ... by the check in the constructor)
   const Word& relator() const { return relator_; }
@@ -274,7 +318,8 @@ public:
   /// `geometry_status` says why.
   Word_result<TriangleMesh> solve(const Path& loop) const
   {
-    s_.check_path(loop);
+    if(loop.empty()) throw Invalid_path_error("Shortest_word_solver: empty loop");
+    for(const Point& q : loop) s_.check_point(q); // consecutive points: checked by crossing_word()
     if(!loop.front().on_vertex || loop.front().v != p_ || !loop.back().on_vertex || loop.back().v != p_)
       throw Invalid_path_error("Shortest_word_solver: the loop must start and end at the base vertex");
     Word_result<TriangleMesh> r;
@@ -338,9 +383,8 @@ private:
   // ---------------------------------------------------------------- letters
   void emit_crossing(halfedge_descriptor h, Word& w) const
   {
-    auto it = exit_side_.find(h);
-    if(it == exit_side_.end()) return;
-    internal::append_reduced(w, side_words_[std::size_t(it->second)]);
+    const int k = exit_side_.get(h);
+    if(k >= 0) internal::append_reduced(w, side_words_[std::size_t(k)]);
   }
 
   // moves from face a to face b (both containing point p), emitting the letters of the generators crossed
@@ -354,27 +398,26 @@ private:
       emit_crossing(h, w);
       return;
     }
-    std::vector<halfedge_descriptor> ccw, cw;
-    int nccw = turn(p.v, a, b, true, ccw), ncw = turn(p.v, a, b, false, cw);
-    const std::vector<halfedge_descriptor>& use = (nccw < ncw || (nccw == ncw && ccw.size() <= cw.size())) ? ccw : cw;
-    for(halfedge_descriptor h : use) emit_crossing(h, w);
+    std::size_t lccw = 0, lcw = 0;
+    const int nccw = turn(p.v, a, b, true, nullptr, lccw), ncw = turn(p.v, a, b, false, nullptr, lcw);
+    turn(p.v, a, b, nccw < ncw || (nccw == ncw && lccw <= lcw), &w, lccw);
   }
 
-  // the halfedges crossed turning around v from face a to face b; returns the number of generator crossings
-  int turn(vertex_descriptor v, face_descriptor a, face_descriptor b, bool ccw, std::vector<halfedge_descriptor>& crossed) const
+  // turns around v from face a to face b, emitting the crossings into `w` if given; returns the number of
+  // generator crossings, `steps` the number of edges crossed
+  int turn(vertex_descriptor v, face_descriptor a, face_descriptor b, bool ccw, Word* w, std::size_t& steps) const
   {
     halfedge_descriptor h = halfedge(a, tm_);
     while(target(h, tm_) != v) h = next(h, tm_);
     int n = 0;
     face_descriptor f = a;
-    std::size_t guard = 0;
+    steps = 0;
     while(f != b) {
       const halfedge_descriptor c = ccw ? h : next(h, tm_);
-      crossed.push_back(c);
-      if(exit_side_.count(c)) ++n;
+      if(exit_side_.get(c) >= 0) { ++n; if(w) emit_crossing(c, *w); }
       h = ccw ? prev(opposite(h, tm_), tm_) : opposite(next(h, tm_), tm_);
       f = face(h, tm_);
-      if(++guard > 1000000) throw Invalid_path_error("Shortest_word_solver: face not around vertex");
+      if(++steps > 1000000) throw Invalid_path_error("Shortest_word_solver: face not around vertex");
     }
     return n;
   }
@@ -455,7 +498,7 @@ private:
     for(const auto& hp : pos) {
       const std::size_t k = hp.second, j = pos.at(opposite(hp.first, tm_));
       const std::size_t a = count[k], b = count[j - 1];
-      if(a != b) exit_side_[hp.first] = int(a * m + b); // a == b: the trivial element
+      if(a != b) exit_side_.set(hp.first, int(a * m + b)); // a == b: the trivial element
     }
     base_face_ = face(first, tm_);
     relator_ = cut_relator_;
@@ -499,11 +542,12 @@ private:
   std::vector<std::vector<halfedge_descriptor> > cut_gens_;
   std::vector<Word> x_to_gen_; // cut-system letters as words in the generators (empty: identical)
   std::vector<Word> side_words_;
-  std::unordered_map<halfedge_descriptor, int> exit_side_;
+  internal::Halfedge_int_map<TriangleMesh> exit_side_;
   bool canonical_ = true;
   face_descriptor base_face_{};
   std::vector<Path> short_gens_;
   std::vector<double> short_lengths_;
+  std::vector<std::string> short_status_;
   std::shared_ptr<const internal::Geodesic_word_reducer> reducer_;
 };
 
