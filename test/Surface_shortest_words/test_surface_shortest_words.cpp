@@ -758,6 +758,7 @@ CGAL_HC_TEST_CASE(issue12_bad_solver_input_and_false_convergence)
   CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(0)), CGAL::Invalid_option_error);
   CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::vertex_snap(0.3)), CGAL::Invalid_option_error);
   CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::max_lift_distance(-1.0)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::max_lift_distance(1e6)), CGAL::Invalid_option_error);
   // the named parameters reach the computation: a tiny lift bound makes the single chart impossible
   const auto a = SSW::shortest_homotopic_loop(s, loop, SSW::parameters::tolerance(1e-6, CGAL::parameters::number_of_iterations(50)));
   CGAL_HC_CHECK(a.iterations <= 50);

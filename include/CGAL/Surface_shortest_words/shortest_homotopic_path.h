@@ -40,12 +40,13 @@ struct Shortest_path_options
 };
 
 /// \ingroup PkgSurfaceShortestWordsRef
-/// \throws CGAL::Invalid_option_error unless 0 < max_lift_distance (finite) and 0 <= vertex_snap <= 1e-3
+/// \throws CGAL::Invalid_option_error unless 0 < max_lift_distance <= 36 and 0 <= vertex_snap <= 1e-3
 /// (a larger snap moves crossings visibly and gives longer "shortest" paths)
 inline void check_options(const Shortest_path_options& o)
 {
-  if(!(o.max_lift_distance > 0) || !std::isfinite(o.max_lift_distance))
-    throw CGAL::Invalid_option_error("Surface_shortest_words: max_lift_distance must be positive and finite");
+  if(!(o.max_lift_distance > 0 && o.max_lift_distance <= 36))
+    throw CGAL::Invalid_option_error("Surface_shortest_words: max_lift_distance must be in (0, 36] (at hyperbolic distance d "
+                                     "a point of the Poincare disk has 1 - |z| ~ 2 e^-d, below double precision beyond 36)");
   if(!(o.vertex_snap >= 0 && o.vertex_snap <= 1e-3))
     throw CGAL::Invalid_option_error("Surface_shortest_words: vertex_snap must be in [0, 1e-3]");
 }
@@ -576,8 +577,8 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
     return r;
   }
   std::ostringstream os;
-  os << "Surface_shortest_words: the shortest path is longer than max_lift_distance = " << options.max_lift_distance
-     << " (beyond double precision; it is approximated by " << pieces.size() << " geodesic pieces)";
+  os << "Surface_shortest_words: the shortest path does not fit in one chart of radius max_lift_distance = "
+     << options.max_lift_distance << " (beyond double precision; it is approximated by " << pieces.size() << " geodesic pieces)";
   throw Precision_error(os.str());
 }
 
