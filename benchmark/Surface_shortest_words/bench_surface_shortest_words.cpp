@@ -4,9 +4,11 @@
 // For each mesh (subdivision m: 8 m^2 faces) and loop length n (random walk from p closed by a shortest
 // edge path), it prints one line
 //   SSW faces=F edges_in_loop=N word_ms=.. crossing_ms=.. path_ms=.. cgal_ms=.. ratio_word_cgal=.. ...
-// word_ms:     Shortest_word_solver::solve (Algorithm 2 shortening when the lift fits in double precision,
-//              then Algorithm 4 and Dehn reduction);
-// crossing_ms: the exact crossing word + Dehn reduction of the input loop (no geometry);
+// word_ms:     Shortest_word_solver::solve with the default options: the exact crossing word of the loop,
+//              its geodesic reduction, and the shortest loop through p (Algorithm 2) when the lift fits in
+//              double precision;
+// exact_ms:    Shortest_word_solver::solve with use_geometry = false: the same word, no shortest loop;
+// crossing_ms: the exact crossing word alone (no reduction);
 // path_ms:     shortest_homotopic_path on a path of the same number of edges that walks out and back (its
 //              lift stays within reach of double precision: measures the linear lifting and tracing);
 // free_loop_ms: shortest_homotopic_loop (Algorithm 3) on the loop, when its shortest loop fits in one chart;
@@ -51,6 +53,10 @@ int main(int argc, char** argv)
     SSW::Shortest_word_options opt;
     Solver solver(surface, S.base, S.generators, opt);
     const double solver_ms = ms_since(t0);
+    SSW::Shortest_word_options exact_opt;
+    exact_opt.use_geometry = false;
+    exact_opt.shorten_generators = false;
+    Solver exact(surface, S.base, S.generators, exact_opt);
     t0 = std::chrono::steady_clock::now();
     CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
     {
@@ -91,9 +97,12 @@ int main(int argc, char** argv)
       const auto res = solver.solve(loop);
       const double word_ms = ms_since(t0);
       t0 = std::chrono::steady_clock::now();
+      const auto exact_res = exact.solve(loop);
+      const double exact_ms = ms_since(t0);
+      t0 = std::chrono::steady_clock::now();
       const SSW::Word raw = solver.crossing_word(loop);
-      const SSW::Word reduced = SSW::internal::dehn_reduce(raw, solver.relator());
       const double crossing_ms = ms_since(t0);
+      const SSW::Word reduced = SSW::internal::dehn_reduce(raw, solver.relator());
 
       // out-and-back path of about n edges: half a random walk, then back along it, then one more edge
       std::vector<Mesh::Halfedge_index> ob(hs.begin(), hs.begin() + std::ptrdiff_t(hs.size() / 2));
@@ -124,10 +133,11 @@ int main(int argc, char** argv)
       const bool same = res.word.empty() ? cst.is_contractible(p1) : cst.are_base_point_homotopic(p1, p2);
       const double cgal_ms = ms_since(t0);
       std::cout << "SSW faces=" << num_faces(S.mesh) << " edges_in_loop=" << hs.size() << " word_ms=" << word_ms
-                << " crossing_ms=" << crossing_ms << " path_ms=" << path_ms << " cgal_ms=" << cgal_ms
-                << " ratio_word_cgal=" << word_ms / cgal_ms << " ratio_crossing_cgal=" << crossing_ms / cgal_ms
+                << " exact_ms=" << exact_ms << " crossing_ms=" << crossing_ms << " path_ms=" << path_ms << " cgal_ms=" << cgal_ms
+                << " ratio_word_cgal=" << word_ms / cgal_ms << " ratio_exact_cgal=" << exact_ms / cgal_ms
+                << " ratio_crossing_cgal=" << crossing_ms / cgal_ms << " same_word=" << (exact_res.word == res.word)
                 << " geometric=" << res.used_geometry << " word_length=" << res.word.size()
-                << " raw_word_length=" << raw.size() << " dehn_of_input_length=" << reduced.size() << " same_as_dehn_of_input=" << (reduced == res.word)
+                << " raw_word_length=" << raw.size() << " dehn_of_input_length=" << reduced.size()
                 << " cgal_agrees=" << same << " path_faces=" << faces_met << " path_length=" << path_len
                 << " free_loop_ms=" << loop_ms << " free_loop_length=" << loop_length << " free_loop_iterations=" << loop_iterations << std::endl;
     }

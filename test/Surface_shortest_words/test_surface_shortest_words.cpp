@@ -2,7 +2,8 @@
 //  - the regular 4g-gon surfaces have an exactly known geometry: positions of the polygon in the Poincare
 //    disk and the side-pairing isometries (holonomy rho), computed from the polygon only;
 //  - CGAL's Curves_on_surface_topology (are_base_point_homotopic, is_contractible) decides homotopy;
-//  - shortest word lengths by breadth-first search in the Cayley graph, elements compared through rho.
+//  - shortest word lengths by breadth-first search in the Cayley graph, elements compared through the
+//    quadruple-precision holonomy of fuchsian_reference.h.
 #include <CGAL/Surface_shortest_words.h>
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/Curves_on_surface_topology.h>
@@ -10,6 +11,8 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <boost/property_map/property_map.hpp>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <filesystem>
 
 #if __has_include(<CGAL/Discrete_Ricci_flow.h>)
 #include <CGAL/Discrete_Ricci_flow.h>
@@ -17,10 +20,12 @@
 #endif
 
 #include "cgal_hc_test.h"
+#include "fuchsian_reference.h"
 
 #include <cmath>
 #include <map>
 #include <queue>
+#include <memory>
 #include <random>
 
 namespace SSW = CGAL::Surface_shortest_words;
@@ -95,57 +100,6 @@ std::vector<Mesh::Halfedge_index> realize(const RPS& S, const SSW::Word& w)
   }
   return r;
 }
-
-// shortest word lengths up to 2 * radius by meet in the middle over a ball of the Cayley graph (through rho)
-struct Cayley_ball
-{
-  std::vector<Isometry> elems; std::vector<int> len;
-  std::multimap<long long, std::size_t> index;
-  static long long key(const Isometry& f)
-  {
-    const Isometry n = f.normalized();
-    const double a2 = n.alpha_real() * n.alpha_real() + n.alpha_imag() * n.alpha_imag();
-    return (long long)std::llround(a2 * 1e4);
-  }
-  long find(const Isometry& f) const
-  {
-    const long long k = key(f);
-    for(long long kk = k - 1; kk <= k + 1; ++kk) {
-      auto r = index.equal_range(kk);
-      for(auto it = r.first; it != r.second; ++it)
-        if(elems[it->second].distance_to(f) < 1e-6 * (1 + std::abs(f.normalized().alpha_real()))) return long(it->second);
-    }
-    return -1;
-  }
-  Cayley_ball(const RPS& S, int radius)
-  {
-    const int ng = 2 * S.genus();
-    elems.push_back(Isometry()); len.push_back(0); index.emplace(key(Isometry()), 0);
-    std::size_t begin = 0;
-    for(int r = 1; r <= radius; ++r) {
-      const std::size_t end = elems.size();
-      for(std::size_t i = begin; i < end; ++i)
-        for(int l = -ng; l <= ng; ++l) {
-          if(l == 0) continue;
-          const Isometry& g = S.rho_generator(std::abs(l) - 1);
-          const Isometry e = (elems[i] * (l > 0 ? g : g.inverse())).normalized();
-          if(find(e) >= 0) continue;
-          index.emplace(key(e), elems.size()); elems.push_back(e); len.push_back(r);
-        }
-      begin = end;
-    }
-  }
-  // shortest word length of f if <= 2 * radius, else -1
-  int word_length(const Isometry& f) const
-  {
-    int best = -1;
-    for(std::size_t i = 0; i < elems.size(); ++i) {
-      const long j = find((elems[i].inverse() * f).normalized());
-      if(j >= 0 && (best < 0 || len[i] + len[std::size_t(j)] < best)) best = len[i] + len[std::size_t(j)];
-    }
-    return best;
-  }
-};
 
 SSW::Word random_word(int g, int length, std::mt19937& rng)
 {
@@ -342,16 +296,19 @@ CGAL_HC_TEST_CASE(words_are_shortest_cayley_bfs)
     RPS S(g, 3);
     Surface s(S.mesh, S.length);
     Solver solver(s, S.base, S.generators);
-    Cayley_ball ball(S, 4);
+    // the reference: the quadruple-precision holonomy of the same polygon and its Cayley ball (radius 7 / 5);
+    // shortest lengths up to radius + 3 by meet in the middle (the double-precision holonomy rho loses the
+    // element for some 10-letter genus-3 words)
+    const ssw_test::Fuchsian_group& G = ssw_test::fuchsian(g);
+    const ssw_test::Ball& ball = ssw_test::ball_of(g);
     std::mt19937 rng(5 + g);
     int compared = 0, mismatched = 0;
     for(int trial = 0; trial < (g == 2 ? 150 : 60); ++trial) {
       const SSW::Word w = random_word(g, 1 + int(rng() % 10), rng);
       const SSW::Word res = solver.word(vertex_path(s, realize(S, w)));
-      const Isometry target = rho_word(S, w);
-      CGAL_HC_CHECK_MSG(rho_word(S, res).distance_to(target) < 1e-6 * (1 + std::abs(target.normalized().alpha_real())),
-                        SSW::to_string(w) << " -> " << SSW::to_string(res));
-      const int best = ball.word_length(target);
+      const ssw_test::M target = G.word(w);
+      CGAL_HC_CHECK_MSG(ball.same(G.word(res), target), SSW::to_string(w) << " -> " << SSW::to_string(res));
+      const int best = ball.length(target, 3);
       if(best >= 0) {
         ++compared;
         if(int(res.size()) != best) ++mismatched;
@@ -369,7 +326,7 @@ CGAL_HC_TEST_CASE(words_are_shortest_cayley_bfs)
       const SSW::Word res = solver.word(vertex_path(s, hs));
       CGAL_HC_CHECK(res.empty() ? cst.is_contractible(pos(S.mesh, hs))
                                 : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res))));
-      const int best = ball.word_length(rho_word(S, res));
+      const int best = ball.length(G.word(res), 3);
       if(best >= 0) {
         ++loops_compared;
         if(int(res.size()) != best) ++mismatched;
@@ -388,7 +345,7 @@ CGAL_HC_TEST_CASE(near_degenerate_loops)
   Surface s(S.mesh, S.length);
   Solver solver(s, S.base, S.generators);
   CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
-  Cayley_ball ball(S, 4);
+  const ssw_test::Ball& ball = ssw_test::ball_of(2);
   // along a generator: the shortest loop is the generator itself (it runs along edges)
   for(int i = 0; i < 4; ++i) {
     const SSW::Word w{i + 1};
@@ -406,7 +363,7 @@ CGAL_HC_TEST_CASE(near_degenerate_loops)
     CGAL_HC_CHECK_MSG(res.empty() ? cst.is_contractible(pos(S.mesh, hs))
                                   : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res))), SSW::to_string(w));
     CGAL_HC_CHECK_MSG(res.size() <= w.size(), SSW::to_string(w) << " -> " << SSW::to_string(res));
-    const int best = ball.word_length(rho_word(S, w));
+    const int best = ball.length(ssw_test::fuchsian(2).word(w), 3);
     CGAL_HC_CHECK_MSG(best >= 0 && int(res.size()) == best, SSW::to_string(w) << " -> " << SSW::to_string(res) << " shortest " << best);
   }
   // the relator gives the empty word
@@ -589,6 +546,244 @@ CGAL_HC_TEST_CASE(ricci_flow_meshes_translation_lengths_and_words)
     }
   }
 }
+
+// issue 10 item 3: the cut and paste to a canonical system succeeds at every base vertex of eight, elephant
+// and anchor (Ricci-flow metric, greedy basis of the shared layer), and the canonical relator written in the
+// greedy loops is the greedy relator (a free-group identity: the substitution is an automorphism)
+CGAL_HC_TEST_CASE(canonical_system_at_every_base_vertex)
+{
+  typedef CGAL::Ricci_flow::Discrete_metric<CGAL::Epick::Point_3> Metric;
+  typedef Metric::Mesh IMesh;
+  namespace HS = CGAL::Hyperbolic_surface_2;
+  for(const char* name : {"/meshes/eight.off", "/meshes/elephant.off", "/meshes/anchor.off"}) {
+    IMesh input;
+    CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_CGAL_DATA_DIR) + name, input));
+    const Metric metric = CGAL::Ricci_flow::hyperbolic_uniformization(input);
+    const IMesh& m = metric.intrinsic_mesh();
+    long ok = 0, failed = 0;
+    for(IMesh::Vertex_index v : m.vertices()) {
+      const HS::Homotopy_basis<IMesh> basis(m, v, metric.edge_length_map());
+      bool good = false;
+      try {
+        const auto& c = basis.canonical_change();
+        const SSW::Word img = SSW::internal::substitute(SSW::internal::canonical_relator(basis.genus()), c.new_in_old);
+        good = img == SSW::internal::free_reduce(basis.relator());
+        for(int i = 1; good && i <= 2 * basis.genus(); ++i)
+          good = SSW::internal::substitute(SSW::internal::substitute(SSW::Word{i}, c.old_in_new), c.new_in_old) == SSW::Word{i};
+      } catch(const std::exception& e) {
+        if(failed < 3) std::cerr << "  " << name << ": " << e.what() << std::endl;
+      }
+      (good ? ok : failed)++;
+    }
+    std::cout << "  " << name << " (genus " << metric.genus() << "): canonical system at " << ok << " of "
+              << m.number_of_vertices() << " base vertices" << std::endl;
+    CGAL_HC_CHECK(failed == 0 && ok > 0);
+  }
+}
+// issue 8 hand-off: every closed connected genus >= 2 triangle mesh of CGAL's demo data and elephant_cid.obj:
+// Ricci metric -> Hyperbolic_surface -> solver with the computed canonical system -> words of random loops,
+// checked with CGAL's are_base_point_homotopic on the intrinsic triangulation (big meshes: fewer loops)
+CGAL_HC_TEST_CASE(ricci_handoff_on_every_demo_mesh)
+{
+  typedef CGAL::Ricci_flow::Discrete_metric<CGAL::Epick::Point_3> Metric;
+  typedef Metric::Mesh IMesh;
+  typedef SSW::Hyperbolic_surface<IMesh, Metric::Edge_length_map> ISurface;
+  typedef SSW::Shortest_word_solver<IMesh, Metric::Edge_length_map> ISolver;
+  std::vector<std::string> files;
+  for(const auto& e : std::filesystem::directory_iterator(std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes"))
+    if(e.path().extension() == ".off" && std::filesystem::file_size(e.path()) < 20000000) files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  files.push_back(std::string(CGAL_HC_DATA_DIR) + "/meshes/elephant_cid.obj");
+  int meshes = 0;
+  std::mt19937 rng(8);
+  for(const std::string& file : files) {
+    IMesh input;
+    if(!CGAL::IO::read_polygon_mesh(file, input) || input.is_empty() || !CGAL::is_closed(input) || !CGAL::is_triangle_mesh(input)) continue;
+    auto cc = input.add_property_map<IMesh::Face_index, std::size_t>("f:cc").first;
+    if(CGAL::Polygon_mesh_processing::connected_components(input, cc) != 1) continue;
+    const long chi = long(input.number_of_vertices()) - long(input.number_of_edges()) + long(input.number_of_faces());
+    if(chi > -2) continue;
+    input.remove_property_map(cc);
+    ++meshes;
+    const std::string name = std::filesystem::path(file).filename().string();
+    try {
+      const Metric metric = CGAL::Ricci_flow::hyperbolic_uniformization(input);
+      CGAL_HC_CHECK_MSG(metric.converged(), name);
+      const IMesh& m = metric.intrinsic_mesh();
+      ISurface s(m, metric.edge_length_map(), 1e-6);
+      CGAL_HC_CHECK(s.genus() == (2 - chi) / 2);
+      const IMesh::Vertex_index base(IMesh::size_type(rng() % m.number_of_vertices()));
+      ISolver solver(s, base);
+      CGAL_HC_CHECK(solver.is_canonical());
+      CGAL::Surface_mesh_topology::Curves_on_surface_topology<IMesh> cst(m);
+      const bool big = m.number_of_faces() > 20000;
+      int agreed = 0, loops = 0, geometric = 0, geometric_differs = 0;
+      for(std::size_t len : {20, 300}) {
+        for(int trial = 0; trial < (big ? 1 : 2); ++trial) {
+          std::vector<IMesh::Halfedge_index> hs;
+          auto v = base;
+          for(std::size_t i = 0; i < len; ++i) {
+            std::vector<IMesh::Halfedge_index> out;
+            for(auto h : CGAL::halfedges_around_source(v, m)) out.push_back(h);
+            hs.push_back(out[rng() % out.size()]);
+            v = m.target(hs.back());
+          }
+          std::map<IMesh::Vertex_index, IMesh::Halfedge_index> parent;
+          std::queue<IMesh::Vertex_index> q; q.push(base); parent[base] = IMesh::null_halfedge();
+          while(!q.empty() && !parent.count(v)) {
+            auto u = q.front(); q.pop();
+            for(auto h : CGAL::halfedges_around_source(u, m))
+              if(!parent.count(m.target(h))) { parent[m.target(h)] = h; q.push(m.target(h)); }
+          }
+          std::vector<IMesh::Halfedge_index> back;
+          while(v != base) { auto h = parent[v]; back.push_back(m.opposite(h)); v = m.source(h); }
+          hs.insert(hs.end(), back.begin(), back.end());
+          const auto res = solver.solve(s.path_from_halfedges(hs));
+          CGAL::Surface_mesh_topology::Path_on_surface<IMesh> p1(m), p2(m);
+          for(auto h : hs) p1.push_back(h);
+          for(auto h : solver.realize(res.word)) p2.push_back(h);
+          const bool ok = res.word.empty() ? cst.is_contractible(p1) : cst.are_base_point_homotopic(p1, p2);
+          CGAL_HC_CHECK_MSG(ok, name << " loop of " << hs.size() << " edges, word " << solver.word_to_string(res.word));
+          CGAL_HC_CHECK(solver.reduce(res.word) == res.word);
+          if(res.used_geometry) {
+            ++geometric;
+            if(solver.reduce(solver.crossing_word(res.loop)) != res.word) ++geometric_differs;
+          }
+          agreed += ok; ++loops;
+        }
+      }
+      std::cout << "  " << name << " (genus " << s.genus() << ", " << m.number_of_faces() << " faces): " << agreed << " of "
+                << loops << " words confirmed by CGAL; " << geometric << " shortest loops, " << geometric_differs
+                << " read differently" << std::endl;
+    } catch(const std::exception& e) {
+      CGAL_HC_CHECK_MSG(false, name << ": " << e.what());
+    }
+  }
+  CGAL_HC_CHECK(meshes >= 10);
+}
 #endif
+
+
+// issue 10: words of loops along the polygon sides (where Dehn's algorithm is not enough) are shortest, and
+// loops along a generator at the base point, from both sides, give the right element (CGAL's oracle)
+CGAL_HC_TEST_CASE(issue10_words_along_generators_shortest_and_right)
+{
+  {
+    RPS S(3, 3);
+    Surface s(S.mesh, S.length);
+    Solver solver(s, S.base, S.generators);
+    // a1 b1 a1^-1 b1^-1 a2 b2 b2 a2^-1 b2^-1 a3 b3 a3^-1 (the 12-gon's own sides): a 10-letter word
+    const SSW::Word w{1, 2, -1, -2, 3, 4, 4, -3, -4, 5, 6, -5};
+    const auto hs = realize(S, w);
+    const auto res = solver.solve(vertex_path(s, hs));
+    CGAL_HC_CHECK_MSG(res.word.size() == 10, SSW::to_string(res.word));
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+    CGAL_HC_CHECK(cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res.word))));
+    const SSW::Word ten{6, 5, -6, -5, 4, 2, 1, -2, -1, 6}; // the issue's 10-letter word: the same element
+    CGAL_HC_CHECK(cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, realize(S, ten))));
+  }
+  for(int g : {2, 3}) {
+    RPS S(g, 3);
+    Surface s(S.mesh, S.length);
+    for(bool computed : {false, true}) {
+      std::unique_ptr<Solver> solver(computed ? new Solver(s, S.base) : new Solver(s, S.base, S.generators));
+      CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+      std::mt19937 rng(300 + g);
+      int n = 0, geometric = 0, geometric_reading_differs = 0;
+      for(int i = 0; i < 2 * g; ++i)
+        for(int sign : {1, -1}) {
+          // along generator i (forwards or backwards), then a random loop, then along generator i again
+          std::vector<Mesh::Halfedge_index> hs;
+          const auto& gi = solver->generator(std::size_t(i));
+          auto along = [&](int sg) {
+            if(sg > 0) hs.insert(hs.end(), gi.begin(), gi.end());
+            else for(auto it = gi.rbegin(); it != gi.rend(); ++it) hs.push_back(S.mesh.opposite(*it));
+          };
+          along(sign);
+          const auto mid = random_loop(S.mesh, S.base, 5 + rng() % 40, rng);
+          hs.insert(hs.end(), mid.begin(), mid.end());
+          along(rng() % 2 ? 1 : -1);
+          const auto res = solver->solve(vertex_path(s, hs));
+          CGAL_HC_CHECK_MSG(res.word.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                             : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver->realize(res.word))),
+                            "genus " << g << " generator " << i << " word " << solver->word_to_string(res.word));
+          CGAL_HC_CHECK(solver->reduce(res.word) == res.word);
+          // diagnostic: the word read from the crossings of the shortest loop (issue 10's elephant case)
+          if(res.used_geometry) {
+            ++geometric;
+            const SSW::Word gw = solver->reduce(solver->crossing_word(res.loop));
+            if(gw != res.word) ++geometric_reading_differs;
+          }
+          ++n;
+        }
+      CGAL_HC_CHECK(n == 4 * g);
+      std::cout << "  genus " << g << (computed ? " computed" : " given") << " system: " << geometric
+                << " shortest loops, the crossing reading of " << geometric_reading_differs
+                << " of them differs from the word (the word is read from the input loop)" << std::endl;
+    }
+  }
+}
+
+// issue 12: bad generators and base vertices throw; the loop iteration reports convergence honestly
+CGAL_HC_TEST_CASE(issue12_bad_solver_input_and_false_convergence)
+{
+  RPS S(2, 3);
+  Surface s(S.mesh, S.length);
+  std::vector<std::vector<Mesh::Halfedge_index> > gens = S.generators;
+  gens[0][0] = Mesh::Halfedge_index(1000000);
+  CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), SSW::Invalid_generators_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, S.base, gens), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, Mesh::null_vertex(), S.generators), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, Mesh::Vertex_index(1000000)), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(Solver(s, Mesh::null_vertex()), CGAL::Invalid_input_error);
+  // two disjoint genus-2 surfaces in one mesh are not a genus-3 surface
+  {
+    Mesh two = S.mesh;
+    two.join(S.mesh);
+    auto len2 = two.property_map<RPS::Edge_index, double>("e:hyperbolic_length").first;
+    CGAL_HC_CHECK(two.number_of_faces() == 2 * S.mesh.number_of_faces());
+    CGAL_HC_CHECK_THROWS(Surface(two, len2), CGAL::Invalid_input_error);
+  }
+  // a loop through a non-base vertex, shortened freely: 2 iterations are not enough to converge
+  std::mt19937 rng(9);
+  const auto hs = random_loop(S.mesh, S.base, 60, rng);
+  const Path loop = vertex_path(s, hs);
+  const auto full = SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(200));
+  const auto two = SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(2));
+  CGAL_HC_CHECK(two.iterations <= 2);
+  if(two.converged) CGAL_HC_CHECK_MSG(std::abs(two.length - full.length) <= 1e-9 * (1 + full.length), two.length << " " << full.length);
+  if(std::abs(two.length - full.length) > 1e-9 * (1 + full.length)) CGAL_HC_CHECK(!two.converged);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, loop, std::nan("")), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, loop, SSW::parameters::tolerance(std::nan(""))), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_loop(s, loop, CGAL::parameters::number_of_iterations(0)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::vertex_snap(0.3)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::max_lift_distance(-1.0)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(SSW::shortest_homotopic_path(s, loop, SSW::parameters::max_lift_distance(1e6)), CGAL::Invalid_option_error);
+  // the named parameters reach the computation: a tiny lift bound makes the single chart impossible
+  const auto a = SSW::shortest_homotopic_loop(s, loop, SSW::parameters::tolerance(1e-6, CGAL::parameters::number_of_iterations(50)));
+  CGAL_HC_CHECK(a.iterations <= 50);
+  CGAL_HC_CHECK(std::abs(a.length - full.length) <= 1e-4 * (1 + full.length));
+}
+
+// words of random loops of 10 to 10^5 edges: geodesic (independent check: not longer than a word from
+// Dehn's algorithm, fixed by the reducer's own acceptor on windows) and the right element (CGAL's oracle)
+CGAL_HC_TEST_CASE(long_random_loops_right_element)
+{
+  RPS S(2, 4);
+  Surface s(S.mesh, S.length);
+  Solver solver(s, S.base, S.generators);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+  std::mt19937 rng(4242);
+  for(std::size_t len : {10, 1000, 100000}) {
+    const auto hs = random_loop(S.mesh, S.base, len, rng);
+    const auto res = solver.solve(vertex_path(s, hs));
+    CGAL_HC_CHECK(res.word.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                                   : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(res.word))));
+    CGAL_HC_CHECK(SSW::internal::dehn_reduce(res.word, solver.relator()).size() == res.word.size());
+    if(!res.used_geometry) CGAL_HC_CHECK(!res.geometry_status.empty());
+    std::cout << "  loop of " << len << " edges: word of " << res.word.size() << " letters, geometry "
+              << (res.used_geometry ? "used" : "not used (" + res.geometry_status + ")") << std::endl;
+  }
+}
 
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }

@@ -7,6 +7,7 @@
 
 #include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/Surface_shortest_words/internal/layout.h>
+#include <CGAL/Hyperbolic_surface_2/Hyperbolic_surface_triangulation.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -31,6 +32,9 @@ bool is_valid_handle(const CGAL::Surface_mesh<P>& m, typename CGAL::Surface_mesh
 template <class P>
 bool is_valid_handle(const CGAL::Surface_mesh<P>& m, typename CGAL::Surface_mesh<P>::Halfedge_index h)
 { return std::size_t(h) < m.num_halfedges() && !m.is_removed(m.edge(h)); }
+template <class P>
+bool is_valid_handle(const CGAL::Surface_mesh<P>& m, typename CGAL::Surface_mesh<P>::Face_index f)
+{ return std::size_t(f) < m.num_faces() && !m.is_removed(f); }
 template <class G, class H>
 bool is_valid_handle(const G&, const H&) { return true; }
 } // namespace internal
@@ -117,7 +121,7 @@ public:
   double angle_at_target(halfedge_descriptor h) const
   {
     const halfedge_descriptor n = next(h, tm_), p = prev(h, tm_);
-    return internal::angle_opposite(length(p), length(h), length(n));
+    return CGAL::Hyperbolic_surface_2::corner_angle(length(p), length(h), length(n));
   }
 
   /// genus, from the Euler characteristic
@@ -278,7 +282,7 @@ public:
 
   // ------------------------------------------------------------------ layouts (used by the algorithms)
   /// lays out face `f` with `source(halfedge(f))` at the origin and its target on the positive real axis
-  void layout_face(face_descriptor f, halfedge_descriptor& h0, internal::Cplx z[3]) const
+  void layout_face(face_descriptor f, halfedge_descriptor& h0, std::complex<double> z[3]) const
   {
     h0 = halfedge(f, tm_);
     const halfedge_descriptor h1 = next(h0, tm_), h2 = next(h1, tm_);
@@ -289,7 +293,7 @@ public:
 
   /// position of a point of the face of `h0` whose vertices source(h0), target(h0), target(next(h0)) are
   /// at z[0], z[1], z[2]
-  internal::Cplx position_in_face(const Point& p, halfedge_descriptor h0, const internal::Cplx z[3]) const
+  std::complex<double> position_in_face(const Point& p, halfedge_descriptor h0, const std::complex<double> z[3]) const
   {
     halfedge_descriptor h = h0;
     for(int i = 0; i < 3; ++i, h = next(h, tm_)) {
@@ -309,9 +313,13 @@ private:
   void check()
   {
     if(num_faces(tm_) == 0) throw Invalid_metric_error("Surface_shortest_words: empty mesh");
-    for(halfedge_descriptor h : halfedges(tm_))
+    for(halfedge_descriptor h : halfedges(tm_)) {
+      const face_descriptor f = face(h, tm_);
+      if(f != GT::null_face() && !internal::is_valid_handle(tm_, f))
+        throw Invalid_metric_error("Surface_shortest_words: a halfedge refers to a face that is not on the mesh (invalid mesh)");
       if(is_border(h, tm_))
         throw Invalid_metric_error("Surface_shortest_words: the mesh has a boundary (a closed surface is required)");
+    }
     for(face_descriptor f : faces(tm_)) {
       const halfedge_descriptor h0 = halfedge(f, tm_), h1 = next(h0, tm_), h2 = next(h1, tm_);
       if(next(h2, tm_) != h0) throw Invalid_metric_error("Surface_shortest_words: the mesh has a non-triangular face");
@@ -325,13 +333,14 @@ private:
         throw Invalid_metric_error(os.str());
       }
     }
-    const long chi = long(num_vertices(tm_)) - long(num_edges(tm_)) + long(num_faces(tm_));
-    if(chi % 2 != 0) throw Invalid_metric_error("Surface_shortest_words: odd Euler characteristic (non-orientable or not a surface)");
-    genus_ = int((2 - chi) / 2);
+    // the shared layer checks the rest (connected, orientable surface) and measures the angle sums
+    // (half-angle formula); the tolerance is applied here to keep this class's message and exception type
+    const CGAL::Hyperbolic_surface_2::Hyperbolic_surface_triangulation<TriangleMesh, EdgeLengthMap> layer(
+      tm_, lengths_, CGAL::Hyperbolic_surface_2::parameters::require_smooth_metric(false));
+    genus_ = layer.genus();
     max_defect_ = 0;
     for(vertex_descriptor v : vertices(tm_)) {
-      double sum = 0;
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_)) sum += angle_at_target(h);
+      const double sum = layer.angle_sum(v);
       const double defect = std::abs(sum - 2.0 * CGAL_PI);
       max_defect_ = (std::max)(max_defect_, defect);
       if(!(defect <= angle_tolerance_)) {

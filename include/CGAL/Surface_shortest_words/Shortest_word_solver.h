@@ -8,9 +8,13 @@
 #include <CGAL/Surface_shortest_words/Hyperbolic_surface.h>
 #include <CGAL/Surface_shortest_words/shortest_homotopic_path.h>
 #include <CGAL/Surface_shortest_words/internal/words.h>
+#include <CGAL/Hyperbolic_surface_2/Homotopy_basis.h>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <functional>
+#include <limits>
+#include <memory>
 #include <queue>
 #include <set>
 #include <sstream>
@@ -20,13 +24,39 @@
 
 namespace CGAL {
 namespace Surface_shortest_words {
+namespace internal {
+// halfedge -> int (absent: -1): a vector by index for Surface_mesh, a hash map for other graphs
+template <class TriangleMesh>
+class Halfedge_int_map
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor H;
+  std::unordered_map<H, int> m_;
+public:
+  explicit Halfedge_int_map(const TriangleMesh&) {}
+  void clear() { m_.clear(); }
+  void set(H h, int v) { m_[h] = v; }
+  int get(H h) const { auto it = m_.find(h); return it == m_.end() ? -1 : it->second; }
+};
+template <class P>
+class Halfedge_int_map<CGAL::Surface_mesh<P> >
+{
+  typedef typename CGAL::Surface_mesh<P>::Halfedge_index H;
+  std::vector<int> v_;
+public:
+  explicit Halfedge_int_map(const CGAL::Surface_mesh<P>& m) : v_(m.number_of_halfedges() + m.number_of_removed_halfedges(), -1) {}
+  void clear() { std::fill(v_.begin(), v_.end(), -1); }
+  void set(H h, int v) { v_.at(std::size_t(h)) = v; }
+  int get(H h) const { return std::size_t(h) < v_.size() ? v_[std::size_t(h)] : -1; }
+};
+} // namespace internal
 
 /// \ingroup PkgSurfaceShortestWordsRef
-/// Thrown when the given loops are not a canonical system of loops through the base vertex.
-class Invalid_generators_error : public std::invalid_argument
+/// Thrown when the given loops are not a canonical system of loops through the base vertex (an
+/// `CGAL::Invalid_input_error` of the common hierarchy).
+class Invalid_generators_error : public CGAL::Invalid_input_error
 {
 public:
-  explicit Invalid_generators_error(const std::string& w) : std::invalid_argument(w) {}
+  explicit Invalid_generators_error(const std::string& w) : CGAL::Invalid_input_error(w) {}
 };
 
 /// \ingroup PkgSurfaceShortestWordsRef
@@ -64,7 +94,8 @@ inline std::vector<std::string> to_labels(const Word& w)
 /// options of `Shortest_word_solver`
 struct Shortest_word_options
 {
-  /// shorten the loop to the shortest loop through the base point (Algorithm 2) before reading its word
+  /// also compute the shortest loop through the base point in the class of the loop (Algorithm 2); the word
+  /// does not depend on it
   bool use_geometry = true;
   /// shorten the generators at construction (their lengths and paths are then available)
   bool shorten_generators = true;
@@ -83,7 +114,9 @@ struct Word_result
   Word crossing_word;                     ///< the word read from the crossings, before reduction
   Surface_path<TriangleMesh> loop;        ///< the loop whose crossings were read (shortest, if geometry was used)
   double length = 0;                      ///< its hyperbolic length (0 when `used_geometry` is false)
-  bool used_geometry = false;             ///< false if the loop was too long for the geometric shortening
+  bool used_geometry = false;             ///< true if the shortest loop was computed (`loop`, `length`)
+  /// empty, or why the geometric shortening was not done (the word does not depend on it)
+  std::string geometry_status;
 };
 
 /*!
@@ -99,19 +132,16 @@ struct Word_result
   throws `Invalid_generators_error` otherwise. With `shorten_generators`, it also computes the shortest loops
   through p homotopic to the generators (Algorithm 2).
 
-  `solve(loop)` (a loop based at p) follows Algorithm 4: the loop is first replaced by the shortest loop
-  through p in its class (Algorithm 2), then its crossings with the generator loops are read in order:
+  `solve(loop)` (a loop based at p) reads the crossings of the loop with the generator loops in order:
   leaving the disk through the side s_k multiplies the current element by the side pairing
-  h_k = (s_1 ... s_k)(s_1 ... s_{j-1})^-1, j the partner side of k. (The thesis' rule "crossing a_i gives
-  the letter b_i^+-1, crossing b_i gives a_i^+-1" holds up to conjugation: h_k is that letter conjugated by a
-  prefix of the relator, e.g. h_1 = a1 b1^-1 a1^-1; with the base point at a corner of the disk the
-  conjugates are needed for an exact word, and the reduction removes them.) Where the shortest loop passes through a
-  vertex (in particular p) or runs along a generator, it is perturbed around the vertex on the side that
-  crosses fewer generators; the start and the end are joined to the base corner the same way. The word is
-  then freely reduced and Dehn-reduced (a subword longer than half a cyclic conjugate of the relator or its
-  inverse is replaced by the shorter complement). The homotopy class of the answer does not depend on the
-  numerics: any perturbation of the shortest loop is homotopic to it, so the word is exact; only its
-  shortness relies on the geometry.
+  h_k = (s_1 ... s_k)(s_1 ... s_{j-1})^-1, j the partner side of k (the thesis' rule "crossing a_i gives
+  the letter b_i^+-1" up to conjugation by a prefix of the relator, needed since p is a corner of the disk).
+  Where the loop passes through a vertex (in particular p) it is perturbed around the vertex on the side
+  that crosses fewer generators; the start and the end are joined to the base corner the same way. This
+  exact word is then made geodesic by `internal::Geodesic_word_reducer` (Birman and Series: a freely reduced
+  word is geodesic iff it has no piece of more than half a relator and no chain of half-relators; see the
+  user manual), so the word is a shortest word of the element, independently of floating point. With
+  `use_geometry`, the shortest loop through p in the class (Algorithm 2) is computed as well.
 
   `TriangleMesh`, `EdgeLengthMap`: as for `Hyperbolic_surface`.
 */
@@ -131,8 +161,10 @@ public:
   Shortest_word_solver(const Surface& surface, vertex_descriptor base,
                        const std::vector<std::vector<halfedge_descriptor> >& generators,
                        const Shortest_word_options& options = Shortest_word_options())
-    : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options)
+    : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options), exit_side_(surface.mesh())
   {
+    check_base();
+    check_options(opt_.path_options);
     validate();
     canonical_ = true;
     std::unordered_map<halfedge_descriptor, int> labels;
@@ -150,6 +182,7 @@ public:
     if(relator_ != canonical)
       throw Invalid_generators_error("Shortest_word_solver: not a canonical system: the boundary of the cut disk reads " +
                                      to_string(relator_) + " instead of " + to_string(canonical));
+    make_reducer();
     shorten();
   }
 
@@ -168,8 +201,10 @@ public:
   */
   Shortest_word_solver(const Surface& surface, vertex_descriptor base,
                        const Shortest_word_options& options = Shortest_word_options())
-    : s_(surface), tm_(surface.mesh()), p_(base), opt_(options)
+    : s_(surface), tm_(surface.mesh()), p_(base), opt_(options), exit_side_(surface.mesh())
   {
+    check_base();
+    check_options(opt_.path_options);
     g_ = s_.genus();
     canonical_ = false;
     std::unordered_map<halfedge_descriptor, int> labels;
@@ -191,6 +226,7 @@ public:
         throw Invalid_generators_error(std::string("Shortest_word_solver: cannot make the greedy basis canonical: ") + e.what());
       }
     }
+    make_reducer();
     shorten();
   }
 
@@ -208,14 +244,42 @@ public:
   }
 
 private:
+  void check_base() const
+  {
+    bool ok = internal::is_valid_handle(tm_, p_) && p_ != boost::graph_traits<TriangleMesh>::null_vertex();
+    if(ok) {
+      ok = false;
+      for(vertex_descriptor v : vertices(tm_)) if(v == p_) { ok = true; break; }
+    }
+    if(!ok) throw Invalid_generators_error("Shortest_word_solver: the base vertex is not a vertex of the mesh");
+  }
+
+  void make_reducer()
+  {
+    try {
+      reducer_ = std::make_shared<const internal::Geodesic_word_reducer>(relator_);
+    } catch(const std::invalid_argument& e) {
+      throw Invalid_generators_error(std::string("Shortest_word_solver: the relator is not a one-vertex surface relator: ") + e.what());
+    }
+  }
+
   void shorten()
   {
     if(opt_.shorten_generators) {
       for(std::size_t i = 0; i < gens_.size(); ++i) {
-        Shortest_path_result<TriangleMesh> r =
-          shortest_loop_through_base(s_, s_.path_from_halfedges(gens_[i]), opt_.path_options);
-        short_gens_.push_back(r.path);
-        short_lengths_.push_back(r.length);
+        try {
+          Shortest_path_result<TriangleMesh> r =
+            shortest_loop_through_base(s_, s_.path_from_halfedges(gens_[i]), opt_.path_options);
+          short_gens_.push_back(r.path);
+          short_lengths_.push_back(r.length);
+          short_status_.push_back(std::string());
+        } catch(const Precision_error& e) {
+          // a long computed generator (a concatenation of greedy loops): its shortest loop is beyond double
+          // precision; the words do not need it
+          short_gens_.push_back(Path());
+          short_lengths_.push_back(std::numeric_limits<double>::quiet_NaN());
+          short_status_.push_back(e.what());
+        }
       }
     }
   }
@@ -225,8 +289,17 @@ public:
   int genus() const { return g_; }
   vertex_descriptor base() const { return p_; }
   const std::vector<halfedge_descriptor>& generator(std::size_t i) const { return gens_[i]; }
-  /// the shortest loop through p homotopic to generator i (if `shorten_generators`)
-  const Path& shortened_generator(std::size_t i) const { return short_gens_.at(i); }
+  /// true if the shortest loop through p homotopic to generator i was computed (`shorten_generators`, and
+  /// within double precision; otherwise `shortened_generator_status(i)` says why)
+  bool has_shortened_generator(std::size_t i) const { return i < short_gens_.size() && short_status_[i].empty(); }
+  const std::string& shortened_generator_status(std::size_t i) const { return short_status_.at(i); }
+  /// the shortest loop through p homotopic to generator i. \throws Precision_error if it was not computed
+  const Path& shortened_generator(std::size_t i) const
+  {
+    if(!has_shortened_generator(i)) throw Precision_error("Shortest_word_solver: shortened generator not available");
+    return short_gens_[i];
+  }
+  /// its length (NaN if not computed)
   double shortened_generator_length(std::size_t i) const { return short_lengths_.at(i); }
   /// the relator read around the disk (a1 b1 a1^-1 b1^-1 ... by the check in the constructor)
   const Word& relator() const { return relator_; }
@@ -238,32 +311,36 @@ public:
   Word word(const CGAL::Surface_mesh_topology::Path_on_surface<TriangleMesh>& loop) const
   { return word(s_.path_from_path_on_surface(loop)); }
 
-  /// Algorithm 4 with its intermediate results
+  /// Algorithm 4 with its intermediate results. The word is the geodesic reduction (`geodesic_reduce()`,
+  /// shortest by the theorem of Birman and Series) of the exact crossing word of the given loop: it does not
+  /// depend on floating point. With `use_geometry`, the shortest loop through p in the class is computed as
+  /// well (`loop`, `length`); when that is impossible (`Precision_error`), `used_geometry` is false and
+  /// `geometry_status` says why.
   Word_result<TriangleMesh> solve(const Path& loop) const
   {
-    s_.check_path(loop);
+    if(loop.empty()) throw Invalid_path_error("Shortest_word_solver: empty loop");
+    for(const Point& q : loop) s_.check_point(q); // consecutive points: checked by crossing_word()
     if(!loop.front().on_vertex || loop.front().v != p_ || !loop.back().on_vertex || loop.back().v != p_)
       throw Invalid_path_error("Shortest_word_solver: the loop must start and end at the base vertex");
     Word_result<TriangleMesh> r;
     r.loop = loop;
-    if(opt_.use_geometry && loop.size() > 1) {
-      try {
-        // one chart only: the chunked fallback of shortest_homotopic_path() cannot give a single geodesic
-        // when this fails, and its pieces did not give shorter words
-        Shortest_path_result<TriangleMesh> sp = internal::shortest_path_one_chart(s_, loop, opt_.path_options);
-        r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
-      } catch(const Precision_error&) {
-        // the shortest loop is too long for double precision: read the crossings of the input loop (exact;
-        // reading those of a representative made of geodesic pieces gave the same reduced words)
-        r.used_geometry = false;
-        r.loop = loop;
-      }
-    }
     if(r.loop.size() == 1) r.loop.push_back(r.loop.front());
     r.crossing_word = crossing_word(r.loop);
-    r.word = internal::dehn_reduce(r.crossing_word, relator_);
+    r.word = reducer_->reduce(r.crossing_word);
+    if(opt_.use_geometry && loop.size() > 1) {
+      try {
+        Shortest_path_result<TriangleMesh> sp = internal::shortest_path_one_chart(s_, loop, opt_.path_options);
+        r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
+      } catch(const Precision_error& e) {
+        r.used_geometry = false;
+        r.geometry_status = e.what();
+      }
+    }
     return r;
   }
+
+  /// the shortest word of the element `w` (a word in the generators) for the relator `relator()`
+  Word reduce(const Word& w) const { return reducer_->reduce(w); }
 
   /// the word realized as an edge loop: the concatenation of the generator loops (inverse letters
   /// traversed backwards)
@@ -306,9 +383,8 @@ private:
   // ---------------------------------------------------------------- letters
   void emit_crossing(halfedge_descriptor h, Word& w) const
   {
-    auto it = exit_side_.find(h);
-    if(it == exit_side_.end()) return;
-    internal::append_reduced(w, side_words_[std::size_t(it->second)]);
+    const int k = exit_side_.get(h);
+    if(k >= 0) internal::append_reduced(w, side_words_[std::size_t(k)]);
   }
 
   // moves from face a to face b (both containing point p), emitting the letters of the generators crossed
@@ -322,27 +398,26 @@ private:
       emit_crossing(h, w);
       return;
     }
-    std::vector<halfedge_descriptor> ccw, cw;
-    int nccw = turn(p.v, a, b, true, ccw), ncw = turn(p.v, a, b, false, cw);
-    const std::vector<halfedge_descriptor>& use = (nccw < ncw || (nccw == ncw && ccw.size() <= cw.size())) ? ccw : cw;
-    for(halfedge_descriptor h : use) emit_crossing(h, w);
+    std::size_t lccw = 0, lcw = 0;
+    const int nccw = turn(p.v, a, b, true, nullptr, lccw), ncw = turn(p.v, a, b, false, nullptr, lcw);
+    turn(p.v, a, b, nccw < ncw || (nccw == ncw && lccw <= lcw), &w, lccw);
   }
 
-  // the halfedges crossed turning around v from face a to face b; returns the number of generator crossings
-  int turn(vertex_descriptor v, face_descriptor a, face_descriptor b, bool ccw, std::vector<halfedge_descriptor>& crossed) const
+  // turns around v from face a to face b, emitting the crossings into `w` if given; returns the number of
+  // generator crossings, `steps` the number of edges crossed
+  int turn(vertex_descriptor v, face_descriptor a, face_descriptor b, bool ccw, Word* w, std::size_t& steps) const
   {
     halfedge_descriptor h = halfedge(a, tm_);
     while(target(h, tm_) != v) h = next(h, tm_);
     int n = 0;
     face_descriptor f = a;
-    std::size_t guard = 0;
+    steps = 0;
     while(f != b) {
       const halfedge_descriptor c = ccw ? h : next(h, tm_);
-      crossed.push_back(c);
-      if(exit_side_.count(c)) ++n;
+      if(exit_side_.get(c) >= 0) { ++n; if(w) emit_crossing(c, *w); }
       h = ccw ? prev(opposite(h, tm_), tm_) : opposite(next(h, tm_), tm_);
       f = face(h, tm_);
-      if(++guard > 1000000) throw Invalid_path_error("Shortest_word_solver: face not around vertex");
+      if(++steps > 1000000) throw Invalid_path_error("Shortest_word_solver: face not around vertex");
     }
     return n;
   }
@@ -363,6 +438,9 @@ private:
       const std::vector<halfedge_descriptor>& g = gens_[i];
       std::ostringstream name; name << (i % 2 == 0 ? "a" : "b") << (i / 2 + 1);
       if(g.empty()) throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " is empty");
+      for(halfedge_descriptor h : g)
+        if(!internal::is_valid_handle(tm_, h) || h == boost::graph_traits<TriangleMesh>::null_halfedge())
+          throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " has a halfedge that is not on the mesh");
       if(source(g.front(), tm_) != p_ || target(g.back(), tm_) != p_)
         throw Invalid_generators_error("Shortest_word_solver: generator " + name.str() + " is not a loop through the base vertex");
       for(std::size_t k = 0; k < g.size(); ++k) {
@@ -420,7 +498,7 @@ private:
     for(const auto& hp : pos) {
       const std::size_t k = hp.second, j = pos.at(opposite(hp.first, tm_));
       const std::size_t a = count[k], b = count[j - 1];
-      if(a != b) exit_side_[hp.first] = int(a * m + b); // a == b: the trivial element
+      if(a != b) exit_side_.set(hp.first, int(a * m + b)); // a == b: the trivial element
     }
     base_face_ = face(first, tm_);
     relator_ = cut_relator_;
@@ -428,72 +506,25 @@ private:
     x_to_gen_.clear();
   }
 
-  // greedy homotopy basis (Erickson-Whittlesey); fills the labels of the cut graph and the generator loops
+  // the greedy homotopy basis of the shared layer (Hyperbolic_surface_2::Homotopy_basis): generator i is its
+  // loop i; fills the labels of the cut graph (tree edges 0, generator edge i +-(i+1))
   halfedge_descriptor greedy_basis(std::unordered_map<halfedge_descriptor, int>& labels)
   {
-    typedef typename Surface::edge_descriptor edge_descriptor;
-    // shortest path tree from p (Dijkstra)
-    std::unordered_map<vertex_descriptor, double> dist;
-    std::unordered_map<vertex_descriptor, halfedge_descriptor> parent; // halfedge reaching the vertex
-    typedef std::pair<double, vertex_descriptor> QE;
-    std::priority_queue<QE, std::vector<QE>, std::greater<QE> > queue;
-    dist[p_] = 0; queue.push(QE(0, p_));
-    while(!queue.empty()) {
-      const QE top = queue.top(); queue.pop();
-      if(top.first > dist[top.second]) continue;
-      for(halfedge_descriptor h : CGAL::halfedges_around_source(top.second, tm_)) {
-        const double d = top.first + s_.length(h);
-        const vertex_descriptor t = target(h, tm_);
-        auto it = dist.find(t);
-        if(it == dist.end() || d < it->second) { dist[t] = d; parent[t] = h; queue.push(QE(d, t)); }
-      }
-    }
-    std::set<edge_descriptor> tree;
-    for(const auto& vp : parent) tree.insert(edge(vp.second, tm_));
-    // maximum spanning tree of the dual graph among the other edges, weight = length of the edge's loop
-    std::vector<std::pair<double, edge_descriptor> > others;
-    for(edge_descriptor e : edges(tm_))
-      if(!tree.count(e)) {
-        const halfedge_descriptor h = halfedge(e, tm_);
-        others.push_back(std::make_pair(dist[source(h, tm_)] + s_.length(h) + dist[target(h, tm_)], e));
-      }
-    std::sort(others.begin(), others.end(), [](const std::pair<double, edge_descriptor>& x, const std::pair<double, edge_descriptor>& y) {
-      return x.first > y.first; });
-    std::unordered_map<face_descriptor, face_descriptor> uf;
-    for(face_descriptor f : faces(tm_)) uf[f] = f;
-    auto find = [&](face_descriptor f) {
-      face_descriptor r = f;
-      while(uf[r] != r) r = uf[r];
-      while(uf[f] != r) { face_descriptor nx = uf[f]; uf[f] = r; f = nx; }
-      return r;
-    };
-    std::vector<edge_descriptor> leftover;
-    for(const auto& we : others) {
-      const halfedge_descriptor h = halfedge(we.second, tm_);
-      const face_descriptor a = find(face(h, tm_)), b = find(face(opposite(h, tm_), tm_));
-      if(a != b) uf[a] = b; else leftover.push_back(we.second);
-    }
-    if(leftover.size() != 2 * std::size_t(g_))
-      throw Invalid_generators_error("Shortest_word_solver: the greedy homotopy basis has " + std::to_string(leftover.size()) +
-                                     " loops instead of 2g (the mesh is not a closed orientable surface?)");
-    auto tree_path = [&](vertex_descriptor v) { // halfedges from p to v
-      std::vector<halfedge_descriptor> r;
-      while(v != p_) { const halfedge_descriptor h = parent.at(v); r.push_back(h); v = source(h, tm_); }
-      std::reverse(r.begin(), r.end());
-      return r;
-    };
+    const Surface& s = s_;
+    auto weight = boost::make_function_property_map<typename Surface::edge_descriptor, double>(
+      [&s](typename Surface::edge_descriptor e) { return s.length(halfedge(e, s.mesh())); });
+    const CGAL::Hyperbolic_surface_2::Homotopy_basis<TriangleMesh> basis(tm_, p_, weight);
+    if(basis.number_of_generators() != 2 * std::size_t(g_))
+      throw Invalid_generators_error("Shortest_word_solver: the greedy homotopy basis has " + std::to_string(basis.number_of_generators()) +
+                                     " loops instead of 2g");
     gens_.clear();
-    for(std::size_t i = 0; i < leftover.size(); ++i) {
-      const halfedge_descriptor h = halfedge(leftover[i], tm_);
-      labels[h] = int(i) + 1;
-      labels[opposite(h, tm_)] = -(int(i) + 1);
-      std::vector<halfedge_descriptor> loop = tree_path(source(h, tm_));
-      loop.push_back(h);
-      const std::vector<halfedge_descriptor> back = tree_path(target(h, tm_));
-      for(auto it = back.rbegin(); it != back.rend(); ++it) loop.push_back(opposite(*it, tm_));
-      gens_.push_back(loop);
+    for(std::size_t i = 0; i < basis.number_of_generators(); ++i) gens_.push_back(basis.loop(i));
+    for(typename Surface::edge_descriptor e : edges(tm_)) {
+      if(!basis.is_cut_edge(e)) continue;
+      const halfedge_descriptor h = halfedge(e, tm_);
+      labels[h] = basis.label(h);
+      labels[opposite(h, tm_)] = basis.label(opposite(h, tm_));
     }
-    for(const auto& vp : parent) { labels[vp.second] = 0; labels[opposite(vp.second, tm_)] = 0; }
     // start along a halfedge of the cut graph leaving p
     for(halfedge_descriptor h : CGAL::halfedges_around_source(p_, tm_))
       if(labels.count(h)) return h;
@@ -511,11 +542,13 @@ private:
   std::vector<std::vector<halfedge_descriptor> > cut_gens_;
   std::vector<Word> x_to_gen_; // cut-system letters as words in the generators (empty: identical)
   std::vector<Word> side_words_;
-  std::unordered_map<halfedge_descriptor, int> exit_side_;
+  internal::Halfedge_int_map<TriangleMesh> exit_side_;
   bool canonical_ = true;
   face_descriptor base_face_{};
   std::vector<Path> short_gens_;
   std::vector<double> short_lengths_;
+  std::vector<std::string> short_status_;
+  std::shared_ptr<const internal::Geodesic_word_reducer> reducer_;
 };
 
 } // namespace Surface_shortest_words

@@ -47,8 +47,8 @@ public:
   typedef Mesh::Halfedge_index Halfedge_index;
   typedef Mesh::Face_index Face_index;
   typedef Mesh::Edge_index Edge_index;
-  typedef internal::Isometry Isometry;
-  typedef internal::Cplx Cplx;
+  typedef CGAL::Poincare_disk_isometry_2<CGAL::Epick> Isometry; ///< isometries of the Poincare disk
+  typedef std::complex<double> Cplx;                           ///< points of the Poincare disk
 
   Mesh mesh;
   Mesh::Property_map<Edge_index, double> length;

@@ -8,6 +8,7 @@
 
 #include <CGAL/Surface_shortest_words/Hyperbolic_surface.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Hyperbolic_geometry_named_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
@@ -15,6 +16,10 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_tolerance_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_max_lift_distance_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_vertex_snap_t)
 
 namespace CGAL {
 namespace Surface_shortest_words {
@@ -33,6 +38,40 @@ struct Shortest_path_options
   /// progress callback (number of faces processed so far); called every 2^16 faces if set
   std::function<void(std::size_t)> progress;
 };
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// \throws CGAL::Invalid_option_error unless 0 < max_lift_distance <= 36 and 0 <= vertex_snap <= 1e-3
+/// (a larger snap moves crossings visibly and gives longer "shortest" paths)
+inline void check_options(const Shortest_path_options& o)
+{
+  if(!(o.max_lift_distance > 0 && o.max_lift_distance <= 36))
+    throw CGAL::Invalid_option_error("Surface_shortest_words: max_lift_distance must be in (0, 36] (at hyperbolic distance d "
+                                     "a point of the Poincare disk has 1 - |z| ~ 2 e^-d, below double precision beyond 36)");
+  if(!(o.vertex_snap >= 0 && o.vertex_snap <= 1e-3))
+    throw CGAL::Invalid_option_error("Surface_shortest_words: vertex_snap must be in [0, 1e-3]");
+}
+
+namespace parameters {
+/// relative length change below which `shortest_homotopic_loop()` stops
+CGAL_HYPERBOLIC_NAMED_PARAMETER(tolerance, ssw_tolerance_t)
+/// `Shortest_path_options::max_lift_distance`
+CGAL_HYPERBOLIC_NAMED_PARAMETER(max_lift_distance, ssw_max_lift_distance_t)
+/// `Shortest_path_options::vertex_snap`
+CGAL_HYPERBOLIC_NAMED_PARAMETER(vertex_snap, ssw_vertex_snap_t)
+} // namespace parameters
+
+/// the path options given by named parameters (defaults of `Shortest_path_options` otherwise), checked
+template <class NP>
+Shortest_path_options path_options(const NP& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Shortest_path_options o;
+  o.max_lift_distance = choose_parameter(get_parameter(np, internal_np::ssw_max_lift_distance_t_v), o.max_lift_distance);
+  o.vertex_snap = choose_parameter(get_parameter(np, internal_np::ssw_vertex_snap_t_v), o.vertex_snap);
+  check_options(o);
+  return o;
+}
 
 /// \ingroup PkgSurfaceShortestWordsRef
 /// result of `shortest_homotopic_path()` and of the loop functions
@@ -525,6 +564,7 @@ Shortest_path_result<typename Surface::Triangle_mesh>
 shortest_homotopic_path(const Surface& surface, const typename Surface::Path& path,
                         const Shortest_path_options& options = Shortest_path_options())
 {
+  check_options(options);
   try {
     return internal::shortest_path_one_chart(surface, path, options);
   } catch(const Precision_error&) {}
@@ -537,8 +577,8 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
     return r;
   }
   std::ostringstream os;
-  os << "Surface_shortest_words: the shortest path is longer than max_lift_distance = " << options.max_lift_distance
-     << " (beyond double precision; it is approximated by " << pieces.size() << " geodesic pieces)";
+  os << "Surface_shortest_words: the shortest path does not fit in one chart of radius max_lift_distance = "
+     << options.max_lift_distance << " (beyond double precision; it is approximated by " << pieces.size() << " geodesic pieces)";
   throw Precision_error(os.str());
 }
 
@@ -597,6 +637,10 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
                         const Shortest_path_options& options = Shortest_path_options())
 {
   typedef typename Surface::Path Path;
+  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw CGAL::Invalid_option_error("shortest_homotopic_loop: the tolerance must be finite and >= 0");
+  if(max_iterations < 1) throw CGAL::Invalid_option_error("shortest_homotopic_loop: at least one iteration is needed");
+  check_options(options);
   Shortest_path_result<typename Surface::Triangle_mesh> r = shortest_loop_through_base(surface, loop, options);
   r.iterations = 1;
   r.converged = false;
@@ -621,6 +665,7 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
     faces += n.embedded_faces;
     n.iterations = r.iterations + 1;
     r = n;
+    r.converged = false; // the inner result's flag says nothing about the loop iteration
     if(std::abs(prev - r.length) <= tolerance * (std::max)(1.0, r.length)) { r.converged = true; break; }
     prev = r.length;
   }
@@ -632,8 +677,11 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
 /*!
   \ingroup PkgSurfaceShortestWordsRef
   `shortest_homotopic_loop()` with CGAL named parameters: `CGAL::parameters::number_of_iterations(n)` (the
-  maximum number of re-basing iterations, default 200); the tolerance is 1e-12 and the path options are the
-  defaults. Example: `shortest_homotopic_loop(surface, loop, CGAL::parameters::number_of_iterations(50))`.
+  maximum number of re-basing iterations, default 200), `Surface_shortest_words::parameters::tolerance(t)`
+  (default 1e-12), `max_lift_distance(d)` (default 25), `vertex_snap(s)` (default 1e-9). Example:
+  `shortest_homotopic_loop(surface, loop, SSW::parameters::tolerance(1e-10, CGAL::parameters::number_of_iterations(50)))`.
+  \throws CGAL::Invalid_option_error for a negative or non-finite tolerance, zero iterations, or an option
+  out of its range (see `check_options()`).
 */
 template <class Surface, class T, class Tag, class Base>
 Shortest_path_result<typename Surface::Triangle_mesh>
@@ -642,8 +690,19 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const std::size_t n = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 200));
-  return shortest_homotopic_loop(surface, loop, 1e-12, n);
+  const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 200));
+  if(!(n >= 1) || !std::isfinite(n)) throw CGAL::Invalid_option_error("shortest_homotopic_loop: number_of_iterations must be >= 1");
+  const double tol = choose_parameter(get_parameter(np, internal_np::ssw_tolerance_t_v), 1e-12);
+  return shortest_homotopic_loop(surface, loop, tol, std::size_t(n), path_options(np));
+}
+
+/// `shortest_homotopic_path()` with named parameters `max_lift_distance`, `vertex_snap`
+template <class Surface, class T, class Tag, class Base>
+Shortest_path_result<typename Surface::Triangle_mesh>
+shortest_homotopic_path(const Surface& surface, const typename Surface::Path& path,
+                        const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return shortest_homotopic_path(surface, path, path_options(np));
 }
 
 } // namespace Surface_shortest_words

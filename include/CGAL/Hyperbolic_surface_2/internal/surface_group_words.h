@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <deque>
+#include <initializer_list>
 #include <stdexcept>
 #include <vector>
 
@@ -96,132 +97,293 @@ inline std::vector<int> substitute(const std::vector<int>& w, const std::vector<
   return r;
 }
 
-/// Cut and paste on the relator (classification of surfaces, done with Nielsen substitutions): turns a
-/// relator R of an orientable closed surface of genus g (2g letters, each once with each sign) into the
-/// canonical a1 b1 a1^-1 b1^-1 ... ag bg ag^-1 bg^-1. Throws std::invalid_argument if R is not of that kind.
-inline Canonical_change make_canonical(const std::vector<int>& R)
+/// Checks that `R` is the relator of a one-vertex cell structure of a closed orientable surface of genus >= 1:
+/// letters +-1..+-2g, each generator once with each sign, and the link of the vertex one cycle of length 4g.
+/// Returns the link as `ccw[k]` = position (0..4g-1) of the direction `k` in the cyclic order around a vertex of
+/// the Cayley graph, direction `k` = letter index `k` (see `letter_index()`). Throws std::invalid_argument.
+inline std::size_t letter_index(int l, int n) { return l > 0 ? std::size_t(l - 1) : std::size_t(n - l - 1); }
+
+inline std::vector<int> surface_relator_link(const std::vector<int>& R)
 {
-  const int n = int(R.size()) / 2; // 2g letters
-  // symbols: ids 1..; expr[id] = word in the old letters; W = relator in symbols; inv[i] = old letter i+1 in symbols
-  std::vector<std::vector<int> > expr(static_cast<std::size_t>(n) + 1);
-  for(int i = 1; i <= n; ++i) expr[std::size_t(i)] = std::vector<int>{i};
-  std::vector<std::vector<int> > inv(static_cast<std::size_t>(n));
-  for(int i = 1; i <= n; ++i) inv[std::size_t(i - 1)] = std::vector<int>{i};
-  std::vector<int> W = R;
-  auto expr_of = [&](const std::vector<int>& w) {
+  const int n = int(R.size()) / 2; // number of generators
+  if(R.size() < 4 || R.size() % 4 != 0) throw std::invalid_argument("not a surface relator (length not a positive multiple of 4)");
+  std::vector<int> seen(2 * std::size_t(n), 0);
+  for(int l : R) {
+    if(l == 0 || std::abs(l) > n) throw std::invalid_argument("not a surface relator (letter out of range)");
+    if(seen[letter_index(l, n)]++) throw std::invalid_argument("not a surface relator (a letter appears twice with the same sign)");
+  }
+  // the face has its corner between R[i] (incoming, direction R[i]^-1) and R[i+1] (outgoing): these two
+  // directions are consecutive around the vertex, next_ccw(R[i+1]) = R[i]^-1
+  const std::size_t m = R.size();
+  std::vector<int> next(m, -1);
+  for(std::size_t i = 0; i < m; ++i) next[letter_index(R[(i + 1) % m], n)] = int(letter_index(-R[i], n));
+  std::vector<int> pos(m, -1);
+  std::size_t d = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    if(pos[d] >= 0) throw std::invalid_argument("not a one-vertex surface relator (the vertex link is not one cycle)");
+    pos[d] = int(k);
+    d = std::size_t(next[d]);
+  }
+  if(d != 0) throw std::invalid_argument("not a one-vertex surface relator (the vertex link is not one cycle)");
+  return pos;
+}
+
+/*!
+  Geodesic (shortest) words in the surface group G = < x_1, ..., x_2g | R >, R a one-vertex surface relator of
+  genus g >= 2 (e.g. the canonical [a1, b1] ... [ag, bg]): returns a shortest word representing the same
+  element as `w`.
+
+  The Cayley graph of G is the 1-skeleton of the tiling of the hyperbolic plane by 4g-gons, 4g around each
+  vertex (the universal cover of the one-vertex cell structure). A word is an edge path; at each inner
+  vertex its turn t (1..4g-1) is the number of tiles on its left. A maximal run of turns 1 (resp. 4g-1) is a
+  piece of the boundary of one tile on the left (right). Birman and Series (Dehn's algorithm revisited, with
+  applications to simple curves on surfaces, 1987; see also Hermiller, Rewriting systems for surface groups)
+  show that a freely reduced word is geodesic if and only if it contains
+   - no piece of more than 2g consecutive edges of a tile (Dehn's rule), and
+   - no chain: consecutive pieces of tiles T_1, ..., T_k (k >= 2) on the same side, T_j and T_j+1 sharing
+     the edge between the two pieces (turn 2, resp. 4g-2, at the junction), with 2g edges on T_1 and T_k and
+     2g-1 on T_2 ... T_k-1.
+  A chain of length L is replaced by the path on the other side of T_1 ... T_k, which has L - 2 edges; a
+  piece of m > 2g edges by the 4g - m others. The reduction is done by a stack: each letter is pushed, and
+  the turn, run and chain state of the top are updated in O(1); a rule that applies to a suffix of the stack
+  is applied and the replacement is pushed again. Every rule shortens the word, so at most |w| / 2 rules
+  apply; the result contains no pattern (each letter was checked with the final stack below it). Cost
+  O(|w| + total length of the replaced pieces), in practice linear. Throws std::invalid_argument if R is
+  not a one-vertex surface relator of genus >= 2.
+*/
+class Geodesic_word_reducer
+{
+public:
+  explicit Geodesic_word_reducer(const std::vector<int>& R)
+    : n_(int(R.size()) / 2), p_(int(R.size())), h_(int(R.size()) / 2), pos_(surface_relator_link(R))
+  {
+    if(R.size() < 8) throw std::invalid_argument("geodesic words: the surface group must have genus >= 2");
+    dir_.assign(std::size_t(p_), 0);
+    for(int l = -n_; l <= n_; ++l) if(l != 0) dir_[std::size_t(pos_[letter_index(l, n_)])] = l;
+  }
+
+  std::vector<int> reduce(const std::vector<int>& w) const
+  {
+    std::vector<Entry> S;
+    std::vector<int> todo(w.rbegin(), w.rend()); // a stack: back() is the next letter
+    S.reserve(w.size());
+    while(!todo.empty()) {
+      const int x = todo.back(); todo.pop_back();
+      if(x == 0 || std::abs(x) > n_) throw std::invalid_argument("geodesic words: letter out of range");
+      push(S, x, todo);
+    }
+    std::vector<int> r;
+    r.reserve(S.size());
+    for(const Entry& e : S) r.push_back(e.letter);
+    return r;
+  }
+
+  /// true iff `w` is freely reduced and contains no long piece and no chain (i.e. is geodesic)
+  bool is_geodesic(const std::vector<int>& w) const { return reduce(w).size() == w.size(); }
+
+private:
+  struct Entry
+  {
+    int letter;
+    int turn;       // turn from the previous letter (-1 at the bottom)
+    int run[2];     // number of consecutive turns 1 (side 0, left) / p-1 (side 1, right) ending here
+    long chain[2];  // start of a valid chain prefix whose last piece ends here, or -1
+  };
+
+  int position(int l) const { return pos_[letter_index(l, n_)]; }
+  int direction(int k) const { return dir_[std::size_t(((k % p_) + p_) % p_)]; }
+  // number of tiles on the left of the path x then y (0: y = x^-1)
+  int turn(int x, int y) const { return (((position(-x) - position(y)) % p_) + p_) % p_; }
+
+  void push(std::vector<Entry>& S, int x, std::vector<int>& todo) const
+  {
+    if(!S.empty() && S.back().letter == -x) { S.pop_back(); return; }
+    Entry e;
+    e.letter = x;
+    e.turn = S.empty() ? -1 : turn(S.back().letter, x);
+    S.push_back(e);
+    const long i = long(S.size()) - 1;
+    for(int side = 0; side < 2; ++side) {
+      const int one = side == 0 ? 1 : p_ - 1, two = side == 0 ? 2 : p_ - 2;
+      Entry& t = S.back();
+      t.run[side] = (i > 0 && t.turn == one) ? S[std::size_t(i - 1)].run[side] + 1 : 0;
+      const int edges = t.run[side] + 1;           // edges of the current piece
+      const long s = i - t.run[side];              // first letter of the piece
+      const bool after_junction = s > 0 && S[std::size_t(s)].turn == two && S[std::size_t(s - 1)].chain[side] >= 0;
+      if(edges > h_) { replace(S, s, 1, side, todo); return; }          // more than half a tile
+      if(edges == h_ && after_junction) {                                  // a chain ends here
+        const long c = S[std::size_t(s - 1)].chain[side];
+        int tiles = 1;
+        for(long j = c + 1; j <= i; ++j) if(S[std::size_t(j)].turn == two) ++tiles;
+        replace(S, c, tiles, side, todo);
+        return;
+      }
+      t.chain[side] = edges == h_ ? s : (edges == h_ - 1 && after_junction ? S[std::size_t(s - 1)].chain[side] : -1);
+    }
+  }
+
+  // replaces S[c..] (pieces of `tiles` consecutive tiles on `side`) by the path on the other side of them:
+  // 4g - m edges for one tile with a piece of m edges, 2g - 1 edges per tile for a chain
+  void replace(std::vector<Entry>& S, long c, int tiles, int side, std::vector<int>& todo) const
+  {
+    const long m = long(S.size()) - c;
+    const int step = side == 0 ? 1 : -1; // the other side of a tile on the left starts one step ccw
+    std::vector<int> rep;
+    rep.push_back(direction(position(S[std::size_t(c)].letter) + step));
+    const long per_tile = tiles == 1 ? p_ - m : h_ - 1;
+    for(int k = 0; k < tiles; ++k)
+      for(long j = (k == 0 ? 1 : 0); j < per_tile; ++j) {
+        const int back = position(-rep.back());
+        rep.push_back(direction(back + (j == 0 ? 2 * step : step)));
+      }
+    S.resize(std::size_t(c));
+    todo.insert(todo.end(), rep.rbegin(), rep.rend());
+  }
+
+  int n_, p_, h_;
+  std::vector<int> pos_, dir_;
+};
+
+/// shortest word of the element `w` of < letters | R > (see `Geodesic_word_reducer`)
+inline std::vector<int> geodesic_reduce(const std::vector<int>& w, const std::vector<int>& R)
+{
+  return Geodesic_word_reducer(R).reduce(w);
+}
+
+/// the canonical relator a1 b1 a1^-1 b1^-1 ... ag bg ag^-1 bg^-1 (a_i = 2i-1, b_i = 2i)
+inline std::vector<int> canonical_relator(int g)
+{
+  std::vector<int> R;
+  for(int i = 0; i < g; ++i) { R.push_back(2 * i + 1); R.push_back(2 * i + 2); R.push_back(-(2 * i + 1)); R.push_back(-(2 * i + 2)); }
+  return R;
+}
+
+namespace canonical_detail {
+
+// the state of the cut and paste: a relator W in symbols (ids 1..), expr[id] = the symbol as a word in the
+// old letters, inv[i] = old letter i+1 as a word in the symbols. Every change is a Nielsen substitution
+// s = A s' B (A, B free of s), so W stays equal, in the free group, to R written in the symbols.
+struct State
+{
+  std::vector<std::vector<int> > expr;
+  std::vector<std::vector<int> > inv;
+  std::vector<int> W;
+
+  std::vector<int> expr_of(const std::vector<int>& w) const
+  {
     std::vector<int> r;
     for(int l : w) append_reduced(r, l > 0 ? expr[std::size_t(l)] : inverse(expr[std::size_t(-l)]));
     return r;
-  };
-  auto new_symbol = [&](const std::vector<int>& e) { expr.push_back(e); return int(expr.size()) - 1; };
-  // replaces symbol s (everywhere) by the word rep
-  auto subst = [&](int s, const std::vector<int>& rep) {
+  }
+  // s = A s' B: creates s' (its expression A^-1 s B^-1) and rewrites W and inv; returns s'
+  int substitute(int s, const std::vector<int>& A, const std::vector<int>& B)
+  {
+    std::vector<int> e = inverse(A); e.push_back(s); append_reduced(e, inverse(B));
+    expr.push_back(expr_of(e));
+    const int t = int(expr.size()) - 1;
+    std::vector<int> rep = A; rep.push_back(t); append_reduced(rep, B);
+    const std::vector<int> irep = inverse(rep);
     auto apply = [&](const std::vector<int>& w) {
       std::vector<int> r;
       for(int l : w) {
-        if(std::abs(l) == s) append_reduced(r, l > 0 ? rep : inverse(rep));
+        if(l == s) append_reduced(r, rep);
+        else if(l == -s) append_reduced(r, irep);
         else append_reduced(r, std::vector<int>{l});
       }
       return r;
     };
     W = apply(W);
     for(auto& w : inv) w = apply(w);
-  };
-  auto sub = [](const std::vector<int>& w, std::size_t a, std::size_t b) {
-    return std::vector<int>(w.begin() + std::ptrdiff_t(a), w.begin() + std::ptrdiff_t(b));
-  };
-  std::vector<int> a_sym, b_sym;
-  for(int h = 0; h < n / 2; ++h) {
-    const std::size_t k0 = 4 * std::size_t(h);
-    if(W.size() < k0 + 4) throw std::invalid_argument("make_canonical: not a surface relator");
-    std::vector<int> G = sub(W, k0, W.size());
-    // find a rotation of G starting with a letter linked with another one
-    std::size_t rot = G.size(), ix = 0, iy = 0, ixi = 0, iyi = 0;
-    for(std::size_t r = 0; r < G.size() && rot == G.size(); ++r) {
-      std::vector<int> Gr = sub(G, r, G.size()); Gr.insert(Gr.end(), G.begin(), G.begin() + std::ptrdiff_t(r));
-      std::size_t xi = 0;
-      while(xi < Gr.size() && Gr[xi] != -Gr[0]) ++xi;
-      if(xi == Gr.size()) throw std::invalid_argument("make_canonical: a letter appears once only");
-      for(std::size_t j = 1; j < xi; ++j) {
-        std::size_t yj = xi + 1;
-        while(yj < Gr.size() && Gr[yj] != -Gr[j]) ++yj;
-        if(yj < Gr.size()) { rot = r; ix = 0; iy = j; ixi = xi; iyi = yj; break; }
-      }
-    }
-    if(rot == G.size()) throw std::invalid_argument("make_canonical: no linked pair (not an orientable surface relator)");
-    if(rot > 0) {
-      // K X Y -> K' Y X with every earlier symbol s = X s' X^-1
-      const std::vector<int> X = sub(G, 0, rot);
-      for(std::size_t q = 0; q < a_sym.size(); ++q) {
-        for(int* s : {&a_sym[q], &b_sym[q]}) {
-          const int ns = new_symbol(expr_of([&] { std::vector<int> w = inverse(X); w.push_back(*s); append_reduced(w, X); return w; }()));
-          std::vector<int> rep = X; rep.push_back(ns); append_reduced(rep, inverse(X));
-          subst(*s, rep);
-          *s = ns;
-        }
-      }
-      // now W = K' X Y with K' = X^-1 K X written as K(s'): the relator X^-1 (K X Y) X = K' Y X
-      std::vector<int> K = sub(W, 0, k0);
-      W = K; append_reduced(W, sub(G, rot, G.size())); append_reduced(W, X);
-      G = sub(W, k0, W.size());
-    }
-    (void)ix;
-    const int x = G[0], y = G[iy];
-    const std::vector<int> B = sub(G, 1, iy), C = sub(G, iy + 1, ixi), D = sub(G, ixi + 1, iyi), E = sub(G, iyi + 1, G.size());
-    // step 1: y = B^-1 x^-1 y1
-    {
-      std::vector<int> xBy{x}; append_reduced(xBy, B); append_reduced(xBy, std::vector<int>{y});
-      const int y1 = new_symbol(expr_of(xBy));
-      std::vector<int> rep = inverse(B); append_reduced(rep, std::vector<int>{-x, y1});
-      if(y > 0) subst(y, rep); else subst(-y, inverse(rep));
-      // step 2: x = D v^-1 C with v = C x^-1 D
-      std::vector<int> CxD = C; append_reduced(CxD, std::vector<int>{-x}); append_reduced(CxD, D);
-      const int v = new_symbol(expr_of(CxD));
-      std::vector<int> rep2 = D; append_reduced(rep2, std::vector<int>{-v}); append_reduced(rep2, C);
-      if(x > 0) subst(x, rep2); else subst(-x, inverse(rep2));
-      // step 3: y1 = D t^-1 with t = y1^-1 D
-      std::vector<int> y1D{-y1}; append_reduced(y1D, D);
-      const int t = new_symbol(expr_of(y1D));
-      std::vector<int> rep3 = D; append_reduced(rep3, std::vector<int>{-t});
-      subst(y1, rep3);
-      // W = K D t^-1 v t v^-1 C B E: rotate D to the end (conjugating K)
-      G = sub(W, k0, W.size());
-      std::size_t dlen = D.size();
-      if(dlen > 0) {
-        const std::vector<int> X = sub(G, 0, dlen);
-        for(std::size_t q = 0; q < a_sym.size(); ++q) {
-          for(int* s : {&a_sym[q], &b_sym[q]}) {
-            const int ns = new_symbol(expr_of([&] { std::vector<int> w = inverse(X); w.push_back(*s); append_reduced(w, X); return w; }()));
-            std::vector<int> rep4 = X; rep4.push_back(ns); append_reduced(rep4, inverse(X));
-            subst(*s, rep4);
-            *s = ns;
-          }
-        }
-        std::vector<int> K = sub(W, 0, k0);
-        G = sub(W, k0, W.size());
-        W = K; append_reduced(W, sub(G, dlen, G.size())); append_reduced(W, X);
-      }
-      // a = t^-1, b = v
-      const int a = new_symbol(inverse(expr[std::size_t(t)]));
-      subst(t, std::vector<int>{-a});
-      a_sym.push_back(a); b_sym.push_back(v);
-      (void)E;
-    }
+    return t;
   }
-  // check: W must read a1 b1 a1^-1 b1^-1 ...
+};
+
+inline std::vector<int> slice(const std::vector<int>& w, std::size_t a, std::size_t b)
+{
+  return std::vector<int>(w.begin() + std::ptrdiff_t(a), w.begin() + std::ptrdiff_t(b));
+}
+
+inline std::vector<int> concat(std::initializer_list<std::vector<int> > parts)
+{
+  std::vector<int> r;
+  for(const auto& p : parts) append_reduced(r, p);
+  return r;
+}
+
+// W = D T with D = [x1, y1] ... [xk, yk] (k0 = 4k letters): turns T into [x, y] T' with T' free of x, y
+inline void extract_handle(State& st, std::size_t k0, std::vector<int>& a_sym, std::vector<int>& b_sym)
+{
+  // a linked pair in T: positions i1 < j1 < i2 < j2 of the symbols u (i1, i2) and v (j1, j2)
+  const std::size_t m = st.W.size();
+  std::size_t i1 = m, j1 = m, i2 = m, j2 = m;
+  std::vector<std::size_t> other(m, m);
+  for(std::size_t i = k0; i < m; ++i)
+    for(std::size_t j = k0; j < m; ++j)
+      if(i != j && st.W[j] == -st.W[i]) other[i] = j;
+  for(std::size_t i = k0; i < m && i1 == m; ++i) {
+    if(other[i] == m) throw std::invalid_argument("make_canonical: a letter appears once only");
+    if(other[i] < i) continue;
+    for(std::size_t j = i + 1; j < other[i]; ++j)
+      if(other[j] > other[i]) { i1 = i; j1 = j; i2 = other[i]; j2 = other[j]; break; }
+  }
+  if(i1 == m) throw std::invalid_argument("make_canonical: no linked pair (not a one-vertex orientable surface relator)");
+  // make the first occurrences positive
+  for(std::size_t q : {i1, j1})
+    if(st.W[q] < 0) { // rename: s = (s')^-1
+      const int s = -st.W[q];
+      st.expr.push_back(inverse(st.expr[std::size_t(s)]));
+      const int t = int(st.expr.size()) - 1;
+      auto rename = [&](std::vector<int>& w) { for(int& l : w) if(std::abs(l) == s) l = l > 0 ? -t : t; };
+      rename(st.W);
+      for(auto& w : st.inv) rename(w);
+    }
+  const int x = st.W[i1], y = st.W[j1];
+  const std::vector<int> U = slice(st.W, k0, i1), P = slice(st.W, i1 + 1, j1), Q = slice(st.W, j1 + 1, i2),
+                         R = slice(st.W, i2 + 1, j2), V = slice(st.W, j2 + 1, m);
+  // T = U x P y Q X R Y V
+  const int x1 = st.substitute(x, {}, inverse(P));                     // T = U x1 y Q P X1 R Y V
+  const int y1 = st.substitute(y, {}, inverse(concat({Q, P})));        // T = U x1 y1 X1 R Q P Y1 V
+  const int x2 = st.substitute(x1, concat({R, Q, P}), {});             // T = U R Q P x2 y1 X2 Y1 V
+  const std::vector<int> M = concat({U, R, Q, P});
+  const int x3 = st.substitute(x2, inverse(M), M);                     // T = x3 y3 X3 Y3 M V
+  const int y3 = st.substitute(y1, inverse(M), M);
+  a_sym.push_back(x3); b_sym.push_back(y3);
+}
+
+} // namespace canonical_detail
+
+/// Cut and paste on the relator (the classification of surfaces by Nielsen substitutions): turns a relator R
+/// of a one-vertex cell structure of a closed orientable surface of genus g (2g letters, each once with
+/// each sign, one vertex) into the canonical a1 b1 a1^-1 b1^-1 ... ag bg ag^-1 bg^-1. Each of the g steps
+/// takes a linked pair x ... y ... x^-1 ... y^-1 of the part not yet canonical, U x P y Q X R Y V, and applies
+/// x = x1 P^-1, y = y1 P^-1 Q^-1, x1 = (R Q P) x2, then conjugates x2, y1 by M = U R Q P: the part becomes
+/// [x3, y3] M V, M V free of x3, y3. Each substitution is a free-group automorphism, so the canonical relator
+/// written with `new_in_old` is R itself (after free reduction), and `old_in_new` is the inverse
+/// automorphism. Throws std::invalid_argument if R is not a one-vertex orientable surface relator.
+inline Canonical_change make_canonical(const std::vector<int>& R)
+{
+  surface_relator_link(R); // validates
+  const int n = int(R.size()) / 2;
+  canonical_detail::State st;
+  st.expr.resize(std::size_t(n) + 1);
+  for(int i = 1; i <= n; ++i) st.expr[std::size_t(i)] = std::vector<int>{i};
+  for(int i = 1; i <= n; ++i) st.inv.push_back(std::vector<int>{i});
+  st.W = R;
+  std::vector<int> a_sym, b_sym;
+  for(std::size_t k0 = 0; k0 < R.size(); k0 += 4) canonical_detail::extract_handle(st, k0, a_sym, b_sym);
   std::vector<int> canon;
   for(std::size_t q = 0; q < a_sym.size(); ++q) {
     canon.push_back(a_sym[q]); canon.push_back(b_sym[q]); canon.push_back(-a_sym[q]); canon.push_back(-b_sym[q]);
   }
-  if(W != canon) throw std::invalid_argument("make_canonical: cut and paste failed");
+  if(st.W != canon || st.expr_of(canon) != free_reduce(R)) throw std::invalid_argument("make_canonical: cut and paste failed");
   Canonical_change res;
-  std::vector<int> id_of(expr.size(), 0);
+  std::vector<int> id_of(st.expr.size(), 0);
   for(std::size_t q = 0; q < a_sym.size(); ++q) {
     id_of[std::size_t(a_sym[q])] = int(2 * q + 1); id_of[std::size_t(b_sym[q])] = int(2 * q + 2);
-    res.new_in_old.push_back(expr[std::size_t(a_sym[q])]);
-    res.new_in_old.push_back(expr[std::size_t(b_sym[q])]);
+    res.new_in_old.push_back(st.expr[std::size_t(a_sym[q])]);
+    res.new_in_old.push_back(st.expr[std::size_t(b_sym[q])]);
   }
-  for(const auto& w : inv) {
+  for(const auto& w : st.inv) {
     std::vector<int> r;
     for(int l : w) {
       const int id = id_of[std::size_t(std::abs(l))];
