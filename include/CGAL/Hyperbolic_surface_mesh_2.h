@@ -8,5 +8,6 @@
 
 #include <CGAL/Hyperbolic_surface_mesh_2/Fundamental_polygon.h>
 #include <CGAL/Hyperbolic_surface_mesh_2/Delaunay_triangulation_on_surface.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/refine_surface_mesh.h>
 
 #endif
