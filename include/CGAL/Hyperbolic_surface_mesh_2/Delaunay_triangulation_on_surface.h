@@ -69,11 +69,12 @@ public:
   typedef std::size_t Face_index;
   typedef std::size_t Vertex_index;
   static constexpr std::size_t null_index = (std::numeric_limits<std::size_t>::max)();
-  /// Points closer than this (hyperbolic distance) to a vertex are located on the vertex. Positions are
-  /// floating-point: a point mapped into a chart through the anchors and transitions, and the vertex positions
-  /// in the charts, drift by about 1e-16 per rebuilt face generation (measured: 2e-9 after 150 insertions with
-  /// many cocircular flips on the Bolza octagon), so a point given twice is recognized up to this distance.
-  static constexpr double duplicate_distance = 1e-8;
+  /// A point closer to a vertex than this times the shortest edge of the face it is located in is located on
+  /// the vertex. Positions are floating-point: a point mapped into a chart through the anchors and
+  /// transitions, and the vertex positions in the charts, drift by about 1e-16 per rebuilt face generation
+  /// (measured: 2e-9 after 150 insertions with many cocircular flips on the Bolza octagon, edges about 0.2),
+  /// so a point given twice is recognized up to this relative distance.
+  static constexpr double duplicate_distance = 1e-7;
 
   /// The result of `locate()`: the face, the point in its chart, and whether it is inside, on edge `index`,
   /// or on the vertex at corner `index`.

@@ -48,7 +48,8 @@ CGAL_HYPERBOLIC_NAMED_PARAMETER(make_simplicial, hsm2_make_simplicial_t)
 enum class Refinement_status {
   SUCCESS,            ///< every face meets the criteria (and the result is a simplicial complex if requested)
   WORK_BOUND_REACHED, ///< stopped after `maximum_number_of_insertions` Steiner points
-  CANCELLED           ///< the callback returned false
+  CANCELLED,          ///< the callback returned false
+  UNREFINABLE_FACES   ///< some faces fail the criteria: their Steiner point could not be inserted (rounding)
 };
 
 inline const char* to_string(Refinement_status s)
@@ -57,6 +58,7 @@ inline const char* to_string(Refinement_status s)
   case Refinement_status::SUCCESS: return "SUCCESS";
   case Refinement_status::WORK_BOUND_REACHED: return "WORK_BOUND_REACHED";
   case Refinement_status::CANCELLED: return "CANCELLED";
+  case Refinement_status::UNREFINABLE_FACES: return "UNREFINABLE_FACES";
   }
   return "?";
 }
@@ -83,6 +85,7 @@ struct Refinement_statistics
   std::size_t simplicial_insertions = 0;    ///< Steiner points inserted to remove loops and multiple edges
   std::size_t barycenters_inserted = 0;     ///< faces with a non-compact circumcircle got their barycentre
   std::size_t unrefinable_faces = 0;        ///< a Steiner point that could not be inserted (rounding)
+  std::size_t faces_failing_criteria = 0;   ///< poor faces left at the end (0 unless the status says otherwise)
   std::size_t flips = 0;
   bool simplicial_complex = false;
   long euler_characteristic = 0;
@@ -102,7 +105,7 @@ struct Refinement_statistics
               << (s.chew ? "" : " alpha_deg=" + std::to_string(s.alpha * deg)) << " vertices=" << s.initial_vertices
               << "->" << s.final_vertices << " faces=" << s.final_faces << " circumcenters=" << s.circumcenters_inserted
               << " simplicial_insertions=" << s.simplicial_insertions << " barycenters=" << s.barycenters_inserted
-              << " unrefinable=" << s.unrefinable_faces << " flips=" << s.flips
+              << " unrefinable=" << s.unrefinable_faces << " failing=" << s.faces_failing_criteria << " flips=" << s.flips
               << " simplicial=" << s.simplicial_complex << " chi=" << s.euler_characteristic << " genus=" << s.genus
               << " min_central_angle_deg=" << s.minimum_central_angle * deg << " max_circumradius=" << s.maximum_circumradius
               << " angles_deg=[" << s.minimum_angle * deg << ", " << s.maximum_angle * deg << "]"
@@ -224,6 +227,8 @@ Refinement_statistics refine(DT& t, bool chew, const NamedParameters& np)
   st.status = r.run(st);
   if(st.status == Refinement_status::SUCCESS && simplicial) st.status = r.make_simplicial(st);
   q.measure(st);
+  for(auto f : t.faces()) if(q.is_bad(f)) ++st.faces_failing_criteria;
+  if(st.status == Refinement_status::SUCCESS && st.faces_failing_criteria > 0) st.status = Refinement_status::UNREFINABLE_FACES;
   st.flips = t.number_of_flips() - flips0;
   if(chew) {
     st.h_star = st.epsilon;

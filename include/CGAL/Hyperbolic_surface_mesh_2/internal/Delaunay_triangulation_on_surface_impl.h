@@ -173,9 +173,10 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
     }
     if(cross >= 0) { p = transition(f, cross).apply_unchecked(p); came_from = F.ne[cross]; f = F.nb[cross]; continue; }
     r.face = f; r.point = p;
-    // a lift of a vertex, up to the rounding of the transitions crossed
+    // a lift of a vertex, up to the rounding of the transitions crossed (relative to the face's size)
+    const double tol = duplicate_distance * (std::min)({edge_length(f, 0), edge_length(f, 1), edge_length(f, 2)});
     for(int i = 0; i < 3; ++i)
-      if(F.z[i] == p || Geometry::distance(F.z[i], p) < duplicate_distance) { r.type = Location::ON_VERTEX; r.index = i; return r; }
+      if(F.z[i] == p || Geometry::distance(F.z[i], p) < tol) { r.type = Location::ON_VERTEX; r.index = i; return r; }
     if(zeros == 0) { r.type = Location::IN_FACE; return r; }
     if(zeros == 1) { r.type = Location::ON_EDGE; r.index = zero_edge; return r; }
     // on two supporting geodesics but not a vertex: rounding of p; take the nearest corner
