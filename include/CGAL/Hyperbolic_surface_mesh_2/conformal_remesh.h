@@ -19,6 +19,7 @@
 
 #include <array>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -56,6 +57,8 @@ struct Remesh_report
   std::vector<Mesh_location> locations; ///< indexed like the vertices of the output mesh
   double seconds_flow = 0, seconds_triangulation = 0, seconds_refinement = 0, seconds_output = 0;
   int genus = 0;
+  /// the refined triangulation of the hyperbolic surface (for pictures and further queries)
+  std::shared_ptr<const Delaunay_triangulation_on_surface<> > surface;
 };
 
 /*!
@@ -155,7 +158,9 @@ Remesh_report conformal_remesh(const TriangleMesh& tm, CGAL::Surface_mesh<Point_
   t0 = Clock::now();
   const Hyperbolic_surface_2::Hyperbolic_surface_triangulation<Mesh, typename std::decay<decltype(lengths)>::type> st(im, lengths);
   rep.genus = st.genus();
-  Delaunay_triangulation_on_surface<> t = Delaunay_triangulation_on_surface<>::from_surface_triangulation(st);
+  auto tp = std::make_shared<Delaunay_triangulation_on_surface<> >(Delaunay_triangulation_on_surface<>::from_surface_triangulation(st));
+  Delaunay_triangulation_on_surface<>& t = *tp;
+  rep.surface = tp;
   rep.seconds_triangulation = seconds(t0);
   t0 = Clock::now();
   const bool chew = choose_parameter(get_parameter(np, CGAL::internal_np::hsm2_use_chew_t_v), false);
