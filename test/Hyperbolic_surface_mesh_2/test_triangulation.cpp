@@ -228,6 +228,24 @@ CGAL_HC_TEST_CASE(bolza_against_P4HT2_random)
   }
 }
 
+CGAL_HC_TEST_CASE(range_insertion)
+{
+  // the range insertion (Hilbert order, located from the previous vertex) gives the same triangulation as
+  // one-by-one insertion (unique for random points): same sorted edge lengths
+  CGAL::Random rng(5);
+  std::vector<Point> pts;
+  for(int k = 0; k < 2000; ++k) pts.push_back(Point(rng.get_double(-0.6, 0.6), rng.get_double(-0.6, 0.6)));
+  DT a(Polygon::Bolza()), b(Polygon::Bolza());
+  for(const Point& p : pts) a.insert_in_frame(p);
+  CGAL_HC_CHECK(b.insert_in_frame(pts.begin(), pts.end()) == pts.size());
+  check_triangulation(b, 2);
+  double worst = 0;
+  CGAL_HC_CHECK_MSG(same_multiset(summarize(a).edge_lengths, summarize(b).edge_lengths, 1e-9, &worst), worst);
+  std::vector<Point> bad{Point(0, 0), Point(2, 0)};
+  CGAL_HC_CHECK_THROWS(b.insert_in_frame(bad.begin(), bad.end()), CGAL::Poincare_disk_domain_error);
+  CGAL_HC_CHECK(b.number_of_vertices() == pts.size() + 1); // nothing inserted
+}
+
 CGAL_HC_TEST_CASE(bolza_against_P4HT2_degenerate)
 {
   // symmetric sets: the origin and regular n-gons around it (cocircular points), under the octagon's

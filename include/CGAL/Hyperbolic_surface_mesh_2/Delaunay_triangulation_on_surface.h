@@ -16,8 +16,10 @@
 #include <CGAL/Poincare_disk_traits_2.h>
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -191,8 +193,9 @@ public:
   /// true if there is no loop edge, no multiple edge and no two faces with the same three vertices
   bool is_simplicial_complex() const
   {
-    std::set<std::pair<Vertex_index, Vertex_index> > edges;
-    std::set<std::array<Vertex_index, 3> > triples;
+    std::vector<std::pair<Vertex_index, Vertex_index> > edges;
+    std::vector<std::array<Vertex_index, 3> > triples;
+    edges.reserve(3 * nf_ / 2); triples.reserve(nf_);
     for(Face_index f = 0; f < faces_.size(); ++f) {
       if(!faces_[f].alive) continue;
       const auto& v = faces_[f].v;
@@ -200,14 +203,16 @@ public:
         const Vertex_index a = v[i], b = v[(i + 1) % 3];
         if(a == b) return false;
         const Face_index g = faces_[f].nb[i];
-        if(f < g || (f == g && i < faces_[f].ne[i]))
-          if(!edges.insert(std::make_pair((std::min)(a, b), (std::max)(a, b))).second) return false;
+        if(f < g || (f == g && i < faces_[f].ne[i])) edges.emplace_back((std::min)(a, b), (std::max)(a, b));
       }
       std::array<Vertex_index, 3> t = v;
       std::sort(t.begin(), t.end());
-      if(!triples.insert(t).second) return false;
+      triples.push_back(t);
     }
-    return true;
+    std::sort(edges.begin(), edges.end());
+    std::sort(triples.begin(), triples.end());
+    return std::adjacent_find(edges.begin(), edges.end()) == edges.end() &&
+           std::adjacent_find(triples.begin(), triples.end()) == triples.end();
   }
   /// number of loop edges plus number of extra copies of multiple edges
   std::size_t number_of_non_simplicial_edges() const;
@@ -244,6 +249,28 @@ public:
   /// Inserts a point given in the frame of the reference triangulation (e.g. a point of the fundamental
   /// polygon, or any of its lifts under the side pairings).
   Vertex_index insert_in_frame(const Point_2& p) { return insert(locate_in_frame(p)); }
+  /// Inserts the points of a range given in the frame of the reference triangulation, in Hilbert order (each
+  /// point located from the face of the previous one). Returns the number of new vertices. Every point is
+  /// checked (`Poincare_disk_domain_error`) before the triangulation is modified.
+  template <class InputIterator>
+  std::size_t insert_in_frame(InputIterator first, InputIterator last)
+  {
+    std::vector<Point_2> pts(first, last);
+    for(const Point_2& p : pts) internal::check_in_disk(p, "Delaunay_triangulation_on_surface::insert_in_frame");
+    CGAL::hilbert_sort(pts.begin(), pts.end());
+    const std::size_t nv = nv_;
+    Vertex_index prev = null_index;
+    for(const Point_2& p : pts) {
+      if(prev != null_index && is_vertex(prev)) {
+        const Face_index f = vertices_[prev].face;
+        const Point_2 q = to_frame(f).inverse().apply_unchecked(p);
+        if(q.x() * q.x() + q.y() * q.y() < 0.99) { const Vertex_index v = insert(q, f); if(v != null_index) prev = v; continue; }
+      }
+      const Vertex_index v = insert_in_frame(p);
+      if(v != null_index) prev = v;
+    }
+    return nv_ - nv;
+  }
 
   /// Removes the vertex `v` (flips its edges until it has degree 3, removes its star, restores the Delaunay
   /// property). Returns false and leaves a Delaunay triangulation with `v` if this is not possible (the last

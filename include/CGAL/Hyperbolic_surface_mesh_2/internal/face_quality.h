@@ -87,24 +87,33 @@ public:
   /// faces incident to a loop edge, to an extra copy of a multiple edge, or with the vertex triple of another face
   std::vector<Face_index> faces_at_non_simplicial_edges() const
   {
-    std::set<Face_index> r;
-    std::map<std::pair<Vertex_index, Vertex_index>, Face_index> seen;
-    std::map<std::array<Vertex_index, 3>, Face_index> triples;
+    std::vector<Face_index> r;
+    typedef std::pair<std::pair<Vertex_index, Vertex_index>, std::array<Face_index, 2> > Edge;
+    typedef std::pair<std::array<Vertex_index, 3>, Face_index> Triple;
+    std::vector<Edge> edges;
+    std::vector<Triple> triples;
     for(Face_index f : t_.faces()) {
       for(int i = 0; i < 3; ++i) {
         const Vertex_index a = t_.vertex(f, i), b = t_.vertex(f, (i + 1) % 3);
-        if(a == b) { r.insert(f); continue; }
         const Face_index g = t_.neighbor(f, i);
-        if(!(f < g || (f == g && i < t_.mirror_index(f, i)))) continue;
-        auto ins = seen.emplace(std::make_pair((std::min)(a, b), (std::max)(a, b)), f);
-        if(!ins.second) { r.insert(f); r.insert(g); }
+        if(a == b) { r.push_back(f); continue; }
+        if(f < g || (f == g && i < t_.mirror_index(f, i)))
+          edges.push_back(Edge(std::make_pair((std::min)(a, b), (std::max)(a, b)), std::array<Face_index, 2>{{f, g}}));
       }
       std::array<Vertex_index, 3> tr{{t_.vertex(f, 0), t_.vertex(f, 1), t_.vertex(f, 2)}};
       std::sort(tr.begin(), tr.end());
-      auto ins = triples.emplace(tr, f);
-      if(!ins.second) { r.insert(f); r.insert(ins.first->second); }
+      triples.push_back(Triple(tr, f));
     }
-    return std::vector<Face_index>(r.begin(), r.end());
+    std::sort(edges.begin(), edges.end());
+    for(std::size_t i = 1; i < edges.size(); ++i)
+      if(edges[i].first == edges[i - 1].first)
+        for(const Edge* e : {&edges[i], &edges[i - 1]}) { r.push_back(e->second[0]); r.push_back(e->second[1]); }
+    std::sort(triples.begin(), triples.end());
+    for(std::size_t i = 1; i < triples.size(); ++i)
+      if(triples[i].first == triples[i - 1].first) { r.push_back(triples[i].second); r.push_back(triples[i - 1].second); }
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end()), r.end());
+    return r;
   }
 
   /// fills the measured fields of the statistics
