@@ -261,3 +261,27 @@ CGAL_HC_TEST_CASE(bolza_against_P4HT2_degenerate)
   for(int i = -6; i <= 6; ++i) for(int j = -6; j <= 6; ++j) grid.push_back(Point(0.1 * i, 0.1 * j));
   compare_with_P4HT2(grid, true);
 }
+
+CGAL_HC_TEST_CASE(points_near_the_circle_at_infinity_and_high_genus)
+{
+  // lifts far from the fundamental polygon (hyperbolic distance up to 7.6 from the origin) are located across
+  // many side pairings; the charts stay near the origin
+  for(int g : {2, 8}) {
+    DT t(Polygon::regular(g));
+    CGAL::Random rng(g + 100);
+    for(int k = 0; k < 200; ++k) {
+      const double r = 1 - std::pow(10.0, -rng.get_double(1, 3)), a = rng.get_double(0, 2 * CGAL_PI);
+      t.insert_in_frame(Point(r * std::cos(a), r * std::sin(a)));
+    }
+    check_triangulation(t, g, true, 1e-6);
+    CGAL_HC_CHECK_MSG(t.number_of_vertices() == 201, t.number_of_vertices());
+    double far = 0;
+    for(std::size_t f : t.faces()) for(const Point& z : t.lift(f)) far = (std::max)(far, DT::Geometry::distance_to_origin(z));
+    CGAL_HC_CHECK_MSG(far < 12, "a chart point at distance " << far);
+  }
+  // a refinement of a genus-8 surface
+  DT t(Polygon::regular(8));
+  const auto st = CGAL::Hyperbolic_surface_mesh_2::refine_Chew(t, CGAL::Hyperbolic_surface_mesh_2::parameters::maximum_circumradius(0.3));
+  CGAL_HC_CHECK(st.status == CGAL::Hyperbolic_surface_mesh_2::Refinement_status::SUCCESS && st.simplicial_complex);
+  check_triangulation(t, 8);
+}
