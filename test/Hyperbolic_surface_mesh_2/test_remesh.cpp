@@ -33,7 +33,7 @@ long genus_of(const Mesh& m) { return (2 - (long(m.number_of_vertices()) - long(
 
 CGAL_HC_TEST_CASE(remesh_demo_meshes)
 {
-  for(const char* name : {"eight.off", "joint.off", "helmet.off", "elephant.off", "anchor.off"}) {
+  for(const char* name : {"eight.off", "joint.off", "femur.off", "helmet.off", "elephant.off", "anchor.off"}) {
     const Mesh in = read(name);
     const long g = genus_of(in);
     for(bool chew : {false, true}) {
