@@ -1,0 +1,378 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A mutable Delaunay triangulation of a closed hyperbolic surface: faces with charts (the lift of their three
+// vertices near the origin of the Poincare disk), adjacency across edges, point location by walking across the
+// transitions, point insertion, vertex removal, Lawson flips decided by the traits' exact in-circle predicate in
+// one chart per edge.
+#ifndef CGAL_HYPERBOLIC_SURFACE_MESH_2_DELAUNAY_TRIANGULATION_ON_SURFACE_H
+#define CGAL_HYPERBOLIC_SURFACE_MESH_2_DELAUNAY_TRIANGULATION_ON_SURFACE_H
+
+#include <CGAL/Hyperbolic_geometry_errors.h>
+#include <CGAL/Hyperbolic_surface_2/disk_geometry.h>
+#include <CGAL/Hyperbolic_surface_2/hyperbolic_triangle.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/Fundamental_polygon.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/Reference_triangulation.h>
+#include <CGAL/Poincare_disk_traits_2.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_surface_mesh_2 {
+
+/*!
+  \ingroup PkgHyperbolicSurfaceMesh2Ref
+  A triangulation of a closed orientable hyperbolic surface (genus g >= 2), kept Delaunay.
+
+  Storage: per face the *chart* `lift(f)` (three points of the Poincare disk, counterclockwise, barycentre at
+  the origin), the three vertices and, per edge `i` (from corner `i` to corner `i+1`), the neighbour face
+  `neighbor(f, i)` and the index of the same edge there, `mirror_index(f, i)`. The transition isometry across
+  an edge, `transition(f, i)`, maps the chart of `f` to the chart of its neighbour (it takes the lift of the
+  edge onto the other lift). Loops and multiple edges are allowed (a Delta-complex); `is_simplicial_complex()`
+  says whether there are none.
+
+  Every edge test is the traits' exact in-circle predicate (`Side_of_oriented_circle_2`: the Euclidean in-circle
+  of the Poincare coordinates, which is the hyperbolic empty-circle test) on the lifted quadrilateral, evaluated
+  in the chart of the face with the smaller index: an edge's status does not depend on the side it is looked at
+  from. Lawson flips restore the Delaunay property after every insertion and removal (they terminate on
+  hyperbolic surfaces: Despre, Schlenker, Teillaud 2020); a work bound turns a failure into
+  `CGAL::Numerical_error`.
+
+  The first triangulation (from a `Fundamental_polygon` or a `Hyperbolic_surface_2::Hyperbolic_surface_triangulation`)
+  is kept as the *reference triangulation*: every live face is anchored to a reference face by an isometry of
+  charts, so that every point can be mapped back to the polygon's frame or to a face of the input mesh
+  (`vertex_reference()`).
+
+  `Traits` is `CGAL::Poincare_disk_traits_2<K>` for a kernel with double coordinates (default `Epick`).
+*/
+template <class Traits_ = CGAL::Poincare_disk_traits_2<CGAL::Exact_predicates_inexact_constructions_kernel> >
+class Delaunay_triangulation_on_surface
+{
+public:
+  typedef Traits_ Geom_traits;
+  typedef typename Geom_traits::Kernel Kernel;
+  typedef typename Geom_traits::Point_2 Point_2;
+  typedef CGAL::Poincare_disk_isometry_2<Kernel> Isometry_2;
+  typedef Hyperbolic_surface_2::Disk_geometry<Kernel> Geometry;
+  typedef std::size_t Face_index;
+  typedef std::size_t Vertex_index;
+  static constexpr std::size_t null_index = (std::numeric_limits<std::size_t>::max)();
+  /// A point closer to a vertex than this times the shortest edge of the face it is located in is located on
+  /// the vertex. Positions are floating-point: a point mapped into a chart through the anchors and
+  /// transitions, and the vertex positions in the charts, drift by about 1e-16 per rebuilt face generation
+  /// (measured: 2e-9 after 150 insertions with many cocircular flips on the Bolza octagon, edges about 0.2),
+  /// so a point given twice is recognized up to this relative distance.
+  static constexpr double duplicate_distance = 1e-7;
+
+  /// The result of `locate()`: the face, the point in its chart, and whether it is inside, on edge `index`,
+  /// or on the vertex at corner `index`.
+  struct Location
+  {
+    enum Type { IN_FACE, ON_EDGE, ON_VERTEX } type = IN_FACE;
+    Face_index face = null_index;
+    int index = -1;
+    Point_2 point;
+  };
+
+  /// A point on the reference triangulation: a reference face and the point in its chart.
+  struct Reference_point
+  {
+    Face_index reference_face = null_index;
+    Point_2 point;
+  };
+
+  // ---------------------------------------------------------------- construction
+  /// The triangulation of the surface glued from `polygon`: its vertex cycles are the vertices (one for a
+  /// regular 4g-gon), the polygon is cut into a fan of triangles from its first vertex, then made Delaunay by
+  /// flips. The frame of the reference triangulation is the polygon's (`insert_in_frame()`). Cost: O(n).
+  explicit Delaunay_triangulation_on_surface(const Fundamental_polygon<Kernel>& polygon) { build_from_polygon(polygon); }
+
+  /// The triangulation of `st` (a `Hyperbolic_surface_2::Hyperbolic_surface_triangulation`): one face per face of
+  /// `st.mesh()` (in the order of `faces(st.mesh())`, with `z[i]` the source of the i-th halfedge from
+  /// `halfedge(f)`), one vertex per vertex (in the order of `vertices(st.mesh())`), then made Delaunay by
+  /// flips. The frame is a development of the mesh along a breadth-first spanning tree of its faces. O(n).
+  template <class SurfaceTriangulation>
+  static Delaunay_triangulation_on_surface from_surface_triangulation(const SurfaceTriangulation& st)
+  {
+    Delaunay_triangulation_on_surface t;
+    t.build_from_surface(st);
+    return t;
+  }
+
+  // ---------------------------------------------------------------- access
+  std::size_t number_of_vertices() const { return nv_; }
+  std::size_t number_of_faces() const { return nf_; }
+  std::size_t number_of_edges() const { return 3 * nf_ / 2; }
+  /// the genus from the Euler characteristic V - E + F = 2 - 2g
+  int genus() const { return int((2 - euler_characteristic()) / 2); }
+  long euler_characteristic() const { return long(nv_) - long(number_of_edges()) + long(nf_); }
+  /// one past the largest face index (faces are `is_face(f)` for f below it)
+  std::size_t face_capacity() const { return faces_.size(); }
+  std::size_t vertex_capacity() const { return vertices_.size(); }
+  bool is_face(Face_index f) const { return f < faces_.size() && faces_[f].alive; }
+  bool is_vertex(Vertex_index v) const { return v < vertices_.size() && vertices_[v].alive; }
+  /// the alive faces / vertices
+  std::vector<Face_index> faces() const { std::vector<Face_index> r; for(Face_index f = 0; f < faces_.size(); ++f) if(faces_[f].alive) r.push_back(f); return r; }
+  std::vector<Vertex_index> vertices() const { std::vector<Vertex_index> r; for(Vertex_index v = 0; v < vertices_.size(); ++v) if(vertices_[v].alive) r.push_back(v); return r; }
+
+  /// the chart of `f`: the lifts of its corners, counterclockwise, barycentre at the origin
+  const std::array<Point_2, 3>& lift(Face_index f) const { return faces_[f].z; }
+  Vertex_index vertex(Face_index f, int i) const { return faces_[f].v[i]; }
+  Face_index neighbor(Face_index f, int i) const { return faces_[f].nb[i]; }
+  int mirror_index(Face_index f, int i) const { return faces_[f].ne[i]; }
+  /// a face incident to `v` and the corner of `v` in it
+  std::pair<Face_index, int> incident_face(Vertex_index v) const { return {vertices_[v].face, vertices_[v].corner}; }
+
+  /// the isometry from the chart of `f` to the chart of `neighbor(f, i)` (lift of edge i onto its other lift)
+  Isometry_2 transition(Face_index f, int i) const
+  {
+    const Face& F = faces_[f];
+    const Face& G = faces_[F.nb[i]];
+    const int j = F.ne[i];
+    return Geometry::isometry_from_pairs(F.z[i], F.z[(i + 1) % 3], G.z[(j + 1) % 3], G.z[j]);
+  }
+  /// the apex of `neighbor(f, i)` (its corner off edge i) in the chart of `f`
+  Point_2 neighbor_apex(Face_index f, int i) const
+  {
+    const Face& F = faces_[f];
+    const Face& G = faces_[F.nb[i]];
+    const int j = F.ne[i];
+    return Geometry::isometry_from_pairs(G.z[(j + 1) % 3], G.z[j], F.z[i], F.z[(i + 1) % 3]).apply_unchecked(G.z[(j + 2) % 3]);
+  }
+  /// hyperbolic length of edge i of f (from its chart)
+  double edge_length(Face_index f, int i) const { return Geometry::distance(faces_[f].z[i], faces_[f].z[(i + 1) % 3]); }
+  /// the anchor of `f`: its reference face and the isometry from its chart into that face's chart
+  std::pair<Face_index, Isometry_2> anchor(Face_index f) const { return {faces_[f].ref, faces_[f].to_ref}; }
+  /// the isometry from the chart of `f` into the frame of the reference triangulation's fundamental domain
+  Isometry_2 to_frame(Face_index f) const { return ref_.faces[faces_[f].ref].to_frame * faces_[f].to_ref; }
+  /// the position of `v` on the reference triangulation (for a mesh input: a face of the input mesh)
+  const Reference_point& vertex_reference(Vertex_index v) const { return vertices_[v].refp; }
+  /// the reference triangulation (read only)
+  const internal::Reference_triangulation<Geom_traits>& reference() const { return ref_; }
+  const Geom_traits& geom_traits() const { return gt_; }
+  /// number of Lawson flips done so far
+  std::size_t number_of_flips() const { return flips_; }
+
+  // ---------------------------------------------------------------- predicates
+  /// true if edge i of f is locally Delaunay: the apex of the neighbour is not strictly inside the
+  /// circumcircle of the face (exact, in the chart of the face with the smaller index). An edge whose two
+  /// sides are the same face counts as Delaunay (it cannot be flipped).
+  bool is_locally_delaunay(Face_index f, int i) const
+  {
+    const Face_index g = faces_[f].nb[i];
+    if(g == f) return true;
+    const int j = faces_[f].ne[i];
+    const Face_index a = f < g ? f : g;
+    const int k = f < g ? i : j;
+    const Point_2 d = neighbor_apex(a, k);
+    const auto& z = faces_[a].z;
+    return gt_.side_of_oriented_circle_2_object()(z[k], z[(k + 1) % 3], z[(k + 2) % 3], d) != CGAL::ON_POSITIVE_SIDE;
+  }
+  /// true if every edge is locally Delaunay
+  bool is_delaunay() const
+  {
+    for(Face_index f = 0; f < faces_.size(); ++f)
+      if(faces_[f].alive)
+        for(int i = 0; i < 3; ++i) if(!is_locally_delaunay(f, i)) return false;
+    return true;
+  }
+  /// true if there is no loop edge, no multiple edge and no two faces with the same three vertices
+  bool is_simplicial_complex() const
+  {
+    std::vector<std::pair<Vertex_index, Vertex_index> > edges;
+    std::vector<std::array<Vertex_index, 3> > triples;
+    edges.reserve(3 * nf_ / 2); triples.reserve(nf_);
+    for(Face_index f = 0; f < faces_.size(); ++f) {
+      if(!faces_[f].alive) continue;
+      const auto& v = faces_[f].v;
+      for(int i = 0; i < 3; ++i) {
+        const Vertex_index a = v[i], b = v[(i + 1) % 3];
+        if(a == b) return false;
+        const Face_index g = faces_[f].nb[i];
+        if(f < g || (f == g && i < faces_[f].ne[i])) edges.emplace_back((std::min)(a, b), (std::max)(a, b));
+      }
+      std::array<Vertex_index, 3> t = v;
+      std::sort(t.begin(), t.end());
+      triples.push_back(t);
+    }
+    std::sort(edges.begin(), edges.end());
+    std::sort(triples.begin(), triples.end());
+    return std::adjacent_find(edges.begin(), edges.end()) == edges.end() &&
+           std::adjacent_find(triples.begin(), triples.end()) == triples.end();
+  }
+  /// number of loop edges plus number of extra copies of multiple edges
+  std::size_t number_of_non_simplicial_edges() const;
+  /// Combinatorial and metric consistency (release-build check used by the tests): adjacency is symmetric,
+  /// glued edges have the same vertices and (up to `tol`) the same length in both charts, every chart is a
+  /// counterclockwise triangle, vertex records point to corners of the vertex. `why` gets the first problem.
+  bool is_valid(std::string* why = nullptr, double tol = 1e-8) const;
+  /// sum of the corner angles at v (from the charts)
+  double angle_sum(Vertex_index v) const;
+  /// total hyperbolic area (l'Huilier on the chart edge lengths); 4 pi (g - 1)
+  double area() const;
+  /// the corner (face, index) of v in counterclockwise order around v
+  std::vector<std::pair<Face_index, int> > star(Vertex_index v) const;
+  /// the degree of v (number of corners around it)
+  std::size_t degree(Vertex_index v) const { return star(v).size(); }
+
+  // ---------------------------------------------------------------- location and insertion
+  /// Walks from `start` to the face containing `p` (given in the chart of `start`), crossing edges whose
+  /// supporting geodesic separates the face from the point (exact Klein orientation in the current chart) and
+  /// mapping `p` by the transitions. Throws `Poincare_disk_domain_error` if `p` is not in the open disk and
+  /// `Numerical_error` if the walk exceeds its work bound (10 F + 1000 steps). Cost: the number of faces crossed.
+  Location locate(const Point_2& p, Face_index start) const;
+  /// Locates a point given in the frame of the reference triangulation (the polygon's frame; for a mesh
+  /// input, the frame of its development): walks in the reference triangulation, then in this one.
+  Location locate_in_frame(const Point_2& p) const;
+
+  /// Inserts the point `p` given in the chart of `start` (see `locate()`) and restores the Delaunay
+  /// property. Returns the new vertex, or the existing one if `p` is (exactly) a lift of a vertex. Points on
+  /// an edge split the edge. Returns `null_index` (no change) for a point on an edge whose two sides are one
+  /// face (not splittable).
+  Vertex_index insert(const Point_2& p, Face_index start) { return insert(locate(p, start)); }
+  /// inserts a located point (see `locate()`)
+  Vertex_index insert(const Location& loc);
+  /// Inserts a point given in the frame of the reference triangulation (e.g. a point of the fundamental
+  /// polygon, or any of its lifts under the side pairings).
+  Vertex_index insert_in_frame(const Point_2& p) { return insert(locate_in_frame(p)); }
+  /// Inserts the points of a range given in the frame of the reference triangulation, in Hilbert order (each
+  /// point located from the face of the previous one). Returns the number of new vertices. Every point is
+  /// checked (`Poincare_disk_domain_error`) before the triangulation is modified.
+  template <class InputIterator>
+  std::size_t insert_in_frame(InputIterator first, InputIterator last)
+  {
+    std::vector<Point_2> pts(first, last);
+    for(const Point_2& p : pts) internal::check_in_disk(p, "Delaunay_triangulation_on_surface::insert_in_frame");
+    CGAL::hilbert_sort(pts.begin(), pts.end());
+    const std::size_t nv = nv_;
+    Vertex_index prev = null_index;
+    for(const Point_2& p : pts) {
+      if(prev != null_index && is_vertex(prev)) {
+        const Face_index f = vertices_[prev].face;
+        const Point_2 q = to_frame(f).inverse().apply_unchecked(p);
+        if(q.x() * q.x() + q.y() * q.y() < 0.99) { const Vertex_index v = insert(q, f); if(v != null_index) prev = v; continue; }
+      }
+      const Vertex_index v = insert_in_frame(p);
+      if(v != null_index) prev = v;
+    }
+    return nv_ - nv;
+  }
+
+  /// Removes the vertex `v` (flips its edges until it has degree 3, removes its star, restores the Delaunay
+  /// property). Returns false and leaves a Delaunay triangulation with `v` if this is not possible (the last
+  /// vertex, or a star that wraps onto itself: too few vertices around `v`).
+  bool remove(Vertex_index v);
+
+  /// Flips edge i of f if the flip is valid (two distinct faces, strictly convex lifted quadrilateral).
+  /// Returns false otherwise. The two faces keep their indices: f gets corners (apex, source, neighbour apex),
+  /// the neighbour gets (neighbour apex, target, apex). The triangulation may stop being Delaunay.
+  bool flip(Face_index f, int i);
+
+  /// Lawson's algorithm from the given edges (face, index): flips every non-Delaunay edge met, pushing the four
+  /// outer edges of each flipped quadrilateral. Throws `Numerical_error` beyond 100 F + 10^5 flips.
+  void restore_delaunay(std::vector<std::pair<Face_index, int> >& stack);
+  /// Lawson's algorithm from every edge.
+  void make_delaunay()
+  {
+    std::vector<std::pair<Face_index, int> > st;
+    for(Face_index f = 0; f < faces_.size(); ++f) if(faces_[f].alive) for(int i = 0; i < 3; ++i) st.emplace_back(f, i);
+    restore_delaunay(st);
+  }
+
+  /// Version stamp of face f (changes whenever the face is rebuilt): lets callers keep stale face handles.
+  std::size_t version(Face_index f) const { return faces_[f].version; }
+
+private:
+  struct Face
+  {
+    std::array<Point_2, 3> z;
+    std::array<Vertex_index, 3> v;
+    std::array<Face_index, 3> nb;
+    std::array<unsigned char, 3> ne;
+    Face_index ref = 0;
+    Isometry_2 to_ref;
+    std::size_t version = 0;
+    bool alive = true;
+  };
+  struct Vertex
+  {
+    Face_index face = null_index;
+    unsigned char corner = 0;
+    Reference_point refp;
+    bool alive = true;
+  };
+  typedef std::pair<Face_index, int> Edge_ref;
+
+  Delaunay_triangulation_on_surface() {}
+
+  void build_from_polygon(const Fundamental_polygon<Kernel>& P);
+  template <class ST> void build_from_surface(const ST& st);
+  void finish_construction();
+
+  Face_index new_face()
+  {
+    ++nf_;
+    if(!free_faces_.empty()) { const Face_index f = free_faces_.back(); free_faces_.pop_back(); faces_[f].alive = true; return f; }
+    faces_.push_back(Face());
+    return faces_.size() - 1;
+  }
+  void kill_face(Face_index f) { faces_[f].alive = false; ++faces_[f].version; free_faces_.push_back(f); --nf_; }
+  Vertex_index new_vertex()
+  {
+    ++nv_;
+    vertices_.push_back(Vertex());
+    return vertices_.size() - 1;
+  }
+
+  void link(Face_index a, int i, Face_index b, int j)
+  {
+    faces_[a].nb[i] = b; faces_[a].ne[i] = (unsigned char)j;
+    faces_[b].nb[j] = a; faces_[b].ne[j] = (unsigned char)i;
+  }
+  /// sets face f to the triangle (a, b, c) of a common chart whose anchor is (ref, chart_to_ref); recentres it
+  void set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
+                Vertex_index va, Vertex_index vb, Vertex_index vc, Face_index ref, const Isometry_2& chart_to_ref);
+  /// reference position of a point q of the chart of face f
+  Reference_point reference_of(Face_index f, const Point_2& q) const
+  {
+    Reference_point r;
+    r.reference_face = faces_[f].ref;
+    r.point = faces_[f].to_ref.apply_unchecked(q);
+    Isometry_2 m;
+    ref_.walk(r.reference_face, r.point, m);
+    return r;
+  }
+  Vertex_index insert_in_face(Face_index f, const Point_2& p);
+  Vertex_index insert_on_edge(Face_index f, int i, const Point_2& p);
+  bool merge_star_of_degree_3(Vertex_index v, const std::vector<Edge_ref>& st);
+  bool quad_is_convex(Face_index f, int i) const;
+
+  Geom_traits gt_;
+  std::vector<Face> faces_;
+  std::vector<Vertex> vertices_;
+  std::vector<Face_index> free_faces_;
+  std::size_t nf_ = 0, nv_ = 0, flips_ = 0;
+  internal::Reference_triangulation<Geom_traits> ref_;
+  std::vector<Face_index> ref_hint_; // a live face anchored at each reference face (may be stale)
+};
+
+} // namespace Hyperbolic_surface_mesh_2
+} // namespace CGAL
+
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/Delaunay_triangulation_on_surface_impl.h>
+
+#endif // CGAL_HYPERBOLIC_SURFACE_MESH_2_DELAUNAY_TRIANGULATION_ON_SURFACE_H

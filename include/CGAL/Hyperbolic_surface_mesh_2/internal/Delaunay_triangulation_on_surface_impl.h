@@ -1,0 +1,498 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Member functions of Delaunay_triangulation_on_surface (construction, location, insertion, flips, removal,
+// checks). Included by <CGAL/Hyperbolic_surface_mesh_2/Delaunay_triangulation_on_surface.h>.
+#ifndef CGAL_HYPERBOLIC_SURFACE_MESH_2_INTERNAL_DELAUNAY_TRIANGULATION_ON_SURFACE_IMPL_H
+#define CGAL_HYPERBOLIC_SURFACE_MESH_2_INTERNAL_DELAUNAY_TRIANGULATION_ON_SURFACE_IMPL_H
+
+#include <algorithm>
+#include <deque>
+
+namespace CGAL {
+namespace Hyperbolic_surface_mesh_2 {
+namespace internal {
+// the BGL free functions (the triangulation's members of the same names hide them)
+template <class G> auto graph_vertices(const G& g) { return vertices(g); }
+template <class G> auto graph_faces(const G& g) { return faces(g); }
+} // namespace internal
+
+#define CGAL_HSM2_DT Delaunay_triangulation_on_surface<Traits_>
+
+// ---------------------------------------------------------------- construction
+
+template <class Traits_>
+void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
+                            Vertex_index va, Vertex_index vb, Vertex_index vc, Face_index ref,
+                            const Isometry_2& chart_to_ref)
+{
+  Face& F = faces_[f];
+  const Isometry_2 t = Isometry_2::translation_to_origin(Geometry::barycenter(a, b, c));
+  F.z = {{t.apply_unchecked(a), t.apply_unchecked(b), t.apply_unchecked(c)}};
+  F.v = {{va, vb, vc}};
+  F.ref = ref;
+  F.to_ref = (chart_to_ref * t.inverse()).normalized();
+  // keep the anchor near: walk the barycentre (the chart's origin) in the reference triangulation
+  Point_2 q = F.to_ref.apply_unchecked(Point_2(0, 0));
+  ref_.walk(F.ref, q, F.to_ref, 64);
+  ref_hint_[F.ref] = f;
+  ++F.version;
+  for(int k = 0; k < 3; ++k) { vertices_[F.v[k]].face = f; vertices_[F.v[k]].corner = (unsigned char)k; }
+}
+
+template <class Traits_>
+void CGAL_HSM2_DT::build_from_polygon(const Fundamental_polygon<Kernel>& P)
+{
+  const std::size_t n = P.size();
+  for(int k = 0; k < P.number_of_vertex_cycles(); ++k) new_vertex();
+  // fan from w_0: triangle t (t = 0..n-3) is (w_0, w_{t+1}, w_{t+2})
+  ref_.faces.resize(n - 2);
+  ref_hint_.assign(n - 2, 0);
+  for(std::size_t t = 0; t + 2 < n; ++t) {
+    const Face_index f = new_face();
+    auto& R = ref_.faces[t];
+    const Point_2 a = P.vertex(0), b = P.vertex(t + 1), c = P.vertex(t + 2);
+    const Isometry_2 tr = Isometry_2::translation_to_origin(Geometry::barycenter(a, b, c));
+    R.z = {{tr.apply_unchecked(a), tr.apply_unchecked(b), tr.apply_unchecked(c)}};
+    R.to_frame = tr.inverse();
+    Face& F = faces_[f];
+    F.z = R.z;
+    F.v = {{Vertex_index(P.vertex_cycle(0)), Vertex_index(P.vertex_cycle(t + 1)), Vertex_index(P.vertex_cycle(t + 2))}};
+    F.ref = t;
+    ref_hint_[t] = f;
+    for(int k = 0; k < 3; ++k) { vertices_[F.v[k]].face = f; vertices_[F.v[k]].corner = (unsigned char)k; }
+  }
+  // the (face, edge) of polygon side s
+  auto side = [&](std::size_t s) -> Edge_ref {
+    if(s == 0) return {0, 0};
+    if(s == n - 1) return {n - 3, 2};
+    return {s - 1, 1};
+  };
+  for(std::size_t t = 0; t + 3 < n; ++t) link(t, 2, t + 1, 0); // diagonals
+  for(std::size_t s = 0; s < n; ++s) {
+    const std::size_t s2 = std::size_t(P.paired_side(s));
+    if(s < s2) { const Edge_ref a = side(s), b = side(s2); link(a.first, a.second, b.first, b.second); }
+  }
+  for(std::size_t t = 0; t + 2 < n; ++t) { ref_.faces[t].nb = faces_[t].nb; ref_.faces[t].ne = faces_[t].ne; }
+  finish_construction();
+}
+
+template <class Traits_>
+template <class ST>
+void CGAL_HSM2_DT::build_from_surface(const ST& st)
+{
+  typedef typename ST::Triangle_mesh TM;
+  typedef typename boost::graph_traits<TM>::vertex_descriptor vd;
+  typedef typename boost::graph_traits<TM>::face_descriptor fd;
+  const TM& tm = st.mesh();
+  std::unordered_map<vd, Vertex_index> vid;
+  for(vd v : internal::graph_vertices(tm)) { const Vertex_index i = new_vertex(); vid[v] = i; }
+  std::unordered_map<fd, Face_index> fid;
+  std::vector<typename ST::Face_chart> charts;
+  for(fd f : internal::graph_faces(tm)) { fid[f] = new_face(); charts.push_back(st.chart(f)); }
+  ref_.faces.resize(charts.size());
+  ref_hint_.assign(charts.size(), 0);
+  for(Face_index f = 0; f < charts.size(); ++f) {
+    Face& F = faces_[f];
+    const auto& c = charts[f];
+    for(int k = 0; k < 3; ++k) {
+      F.z[k] = c.z[k];
+      F.v[k] = vid[source(c.h[k], tm)];
+      const auto o = opposite(c.h[k], tm);
+      const Face_index g = fid[face(o, tm)];
+      F.nb[k] = g;
+      F.ne[k] = (unsigned char)charts[g].index(o);
+      vertices_[F.v[k]].face = f; vertices_[F.v[k]].corner = (unsigned char)k;
+    }
+    F.ref = f;
+    ref_hint_[f] = f;
+    ref_.faces[f].z = F.z; ref_.faces[f].nb = F.nb; ref_.faces[f].ne = F.ne;
+  }
+  // frames: development along a breadth-first spanning tree of the faces
+  std::vector<char> seen(charts.size(), 0);
+  std::deque<Face_index> queue(1, 0);
+  seen[0] = 1;
+  while(!queue.empty()) {
+    const Face_index f = queue.front(); queue.pop_front();
+    for(int i = 0; i < 3; ++i) {
+      const Face_index g = ref_.faces[f].nb[i];
+      if(seen[g]) continue;
+      seen[g] = 1;
+      ref_.faces[g].to_frame = (ref_.faces[f].to_frame * ref_.transition(f, i).inverse()).normalized();
+      queue.push_back(g);
+    }
+  }
+  finish_construction();
+}
+
+template <class Traits_>
+void CGAL_HSM2_DT::finish_construction()
+{
+  for(Face_index f = 0; f < faces_.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      Vertex& V = vertices_[faces_[f].v[k]];
+      if(V.refp.reference_face == null_index) { V.refp.reference_face = f; V.refp.point = faces_[f].z[k]; }
+    }
+  make_delaunay();
+}
+
+// ---------------------------------------------------------------- location
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start) const
+{
+  internal::check_in_disk(p0, "Delaunay_triangulation_on_surface::locate");
+  if(!is_face(start)) throw Invalid_input_error("Delaunay_triangulation_on_surface::locate: not a face");
+  const auto orient = gt_.orientation_2_object();
+  Location r;
+  Point_2 p = p0;
+  Face_index f = start;
+  int came_from = -1;
+  const std::size_t bound = 10 * nf_ + 1000;
+  for(std::size_t step = 0; step < bound; ++step) {
+    const Face& F = faces_[f];
+    int cross = -1, zeros = 0, zero_edge = -1;
+    for(int k = 0; k < 3; ++k) {
+      const int i = (k + int(step)) % 3; // rotate the first edge tried: no cycling in the visibility walk
+      if(i == came_from) continue;
+      const CGAL::Orientation o = orient(F.z[i], F.z[(i + 1) % 3], p);
+      if(o == CGAL::RIGHT_TURN) { cross = i; break; }
+    }
+    if(cross >= 0) {
+      p = transition(f, cross).apply_unchecked(p);
+      came_from = F.ne[cross];
+      f = F.nb[cross];
+      continue;
+    }
+    // inside or on the boundary (the edge we came from is on the left by construction, test it again)
+    for(int i = 0; i < 3; ++i) {
+      const CGAL::Orientation o = orient(F.z[i], F.z[(i + 1) % 3], p);
+      // right of the edge we came through (rounding of the transition): on that edge
+      if(o == CGAL::RIGHT_TURN && i != came_from) { cross = i; break; }
+      if(o != CGAL::LEFT_TURN) { ++zeros; zero_edge = i; }
+    }
+    if(cross >= 0) { p = transition(f, cross).apply_unchecked(p); came_from = F.ne[cross]; f = F.nb[cross]; continue; }
+    r.face = f; r.point = p;
+    // a lift of a vertex, up to the rounding of the transitions crossed (relative to the face's size)
+    const double tol = duplicate_distance * (std::min)({edge_length(f, 0), edge_length(f, 1), edge_length(f, 2)});
+    for(int i = 0; i < 3; ++i)
+      if(F.z[i] == p || Geometry::distance(F.z[i], p) < tol) { r.type = Location::ON_VERTEX; r.index = i; return r; }
+    if(zeros == 0) { r.type = Location::IN_FACE; return r; }
+    if(zeros == 1) { r.type = Location::ON_EDGE; r.index = zero_edge; return r; }
+    // on two supporting geodesics but not a vertex: rounding of p; take the nearest corner
+    int best = 0;
+    for(int i = 1; i < 3; ++i) if(Geometry::distance(F.z[i], p) < Geometry::distance(F.z[best], p)) best = i;
+    r.type = Location::ON_VERTEX; r.index = best; return r;
+  }
+  throw Numerical_error("Delaunay_triangulation_on_surface::locate: the walk exceeded its work bound");
+}
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p) const
+{
+  internal::check_in_disk(p, "Delaunay_triangulation_on_surface::locate_in_frame");
+  std::size_t o = 0;
+  Point_2 q = ref_.faces[0].to_frame.inverse().apply_unchecked(p);
+  Isometry_2 m;
+  ref_.walk(o, q, m, 100000);
+  // a live face anchored at o (or near it)
+  Face_index f = ref_hint_[o];
+  if(!is_face(f) || faces_[f].ref != o) {
+    f = null_index;
+    for(Face_index g = 0; g < faces_.size(); ++g) if(faces_[g].alive && faces_[g].ref == o) { f = g; break; }
+    if(f == null_index) { // no face anchored at o: express q in the chart of any anchored neighbour's anchor
+      for(Face_index g = 0; g < faces_.size() && f == null_index; ++g)
+        if(faces_[g].alive) {
+          // map q from o to faces_[g].ref through frames (both are charts of the same domain development)
+          const Isometry_2 o_to_g = ref_.faces[faces_[g].ref].to_frame.inverse() * ref_.faces[o].to_frame;
+          q = o_to_g.apply_unchecked(q); f = g;
+        }
+      return locate(faces_[f].to_ref.inverse().apply_unchecked(q), f);
+    }
+  }
+  return locate(faces_[f].to_ref.inverse().apply_unchecked(q), f);
+}
+
+// ---------------------------------------------------------------- insertion
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert(const Location& loc)
+{
+  if(loc.type == Location::ON_VERTEX) return faces_[loc.face].v[loc.index];
+  if(loc.type == Location::ON_EDGE) return insert_on_edge(loc.face, loc.index, loc.point);
+  return insert_in_face(loc.face, loc.point);
+}
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, const Point_2& p)
+{
+  const Face F = faces_[f];
+  const Vertex_index w = new_vertex();
+  vertices_[w].refp = reference_of(f, p);
+  const Face_index f1 = new_face(), f2 = new_face();
+  set_face(f, F.z[0], F.z[1], p, F.v[0], F.v[1], w, F.ref, F.to_ref);
+  set_face(f1, F.z[1], F.z[2], p, F.v[1], F.v[2], w, F.ref, F.to_ref);
+  set_face(f2, F.z[2], F.z[0], p, F.v[2], F.v[0], w, F.ref, F.to_ref);
+  auto remap = [&](Edge_ref e) -> Edge_ref {
+    if(e.first != f) return e;
+    return e.second == 0 ? Edge_ref(f, 0) : (e.second == 1 ? Edge_ref(f1, 0) : Edge_ref(f2, 0));
+  };
+  const Edge_ref L[3] = {remap({F.nb[0], F.ne[0]}), remap({F.nb[1], F.ne[1]}), remap({F.nb[2], F.ne[2]})};
+  link(f, 0, L[0].first, L[0].second);
+  link(f1, 0, L[1].first, L[1].second);
+  link(f2, 0, L[2].first, L[2].second);
+  link(f, 1, f1, 2); link(f1, 1, f2, 2); link(f2, 1, f, 2);
+  std::vector<Edge_ref> st{{f, 0}, {f1, 0}, {f2, 0}};
+  restore_delaunay(st);
+  return w;
+}
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_on_edge(Face_index f, int i, const Point_2& p)
+{
+  const Face_index g = faces_[f].nb[i];
+  if(g == f) return null_index;
+  const int j = faces_[f].ne[i];
+  const Face F = faces_[f], G = faces_[g];
+  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+  const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);
+  const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
+  const Vertex_index w = new_vertex();
+  vertices_[w].refp = reference_of(f, p);
+  const Face_index f1 = new_face(), g1 = new_face();
+  set_face(f, a, p, c, va, w, vc, F.ref, F.to_ref);
+  set_face(f1, p, b, c, w, vb, vc, F.ref, F.to_ref);
+  set_face(g, b, p, d, vb, w, vd, F.ref, F.to_ref);
+  set_face(g1, p, a, d, w, va, vd, F.ref, F.to_ref);
+  auto remap = [&](Edge_ref e) -> Edge_ref {
+    if(e.first == f && e.second == i1) return {f1, 1};
+    if(e.first == f && e.second == i2) return {f, 2};
+    if(e.first == g && e.second == j1) return {g1, 1};
+    if(e.first == g && e.second == j2) return {g, 2};
+    return e;
+  };
+  const Edge_ref Lbc = remap({F.nb[i1], F.ne[i1]}), Lca = remap({F.nb[i2], F.ne[i2]}),
+                 Lad = remap({G.nb[j1], G.ne[j1]}), Ldb = remap({G.nb[j2], G.ne[j2]});
+  link(f1, 1, Lbc.first, Lbc.second);
+  link(f, 2, Lca.first, Lca.second);
+  link(g1, 1, Lad.first, Lad.second);
+  link(g, 2, Ldb.first, Ldb.second);
+  link(f, 0, g1, 0); link(f, 1, f1, 2); link(f1, 0, g, 0); link(g, 1, g1, 2);
+  std::vector<Edge_ref> st{{f, 2}, {f1, 1}, {g, 2}, {g1, 1}};
+  restore_delaunay(st);
+  return w;
+}
+
+// ---------------------------------------------------------------- flips
+
+template <class Traits_>
+bool CGAL_HSM2_DT::quad_is_convex(Face_index f, int i) const
+{
+  const Face& F = faces_[f];
+  if(F.nb[i] == f) return false;
+  const auto orient = gt_.orientation_2_object();
+  const Point_2 &a = F.z[i], &b = F.z[(i + 1) % 3], &c = F.z[(i + 2) % 3];
+  const Point_2 d = neighbor_apex(f, i);
+  return orient(b, a, d) == CGAL::LEFT_TURN && orient(d, b, c) == CGAL::LEFT_TURN && orient(c, a, d) == CGAL::LEFT_TURN;
+}
+
+template <class Traits_>
+bool CGAL_HSM2_DT::flip(Face_index f, int i)
+{
+  if(!quad_is_convex(f, i)) return false;
+  const Face_index g = faces_[f].nb[i];
+  const int j = faces_[f].ne[i];
+  const Face F = faces_[f], G = faces_[g];
+  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+  const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);
+  const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
+  set_face(f, c, a, d, vc, va, vd, F.ref, F.to_ref);
+  set_face(g, d, b, c, vd, vb, vc, F.ref, F.to_ref);
+  auto remap = [&](Edge_ref e) -> Edge_ref {
+    if(e.first == f && e.second == i1) return {g, 1};
+    if(e.first == f && e.second == i2) return {f, 0};
+    if(e.first == g && e.second == j1) return {f, 1};
+    if(e.first == g && e.second == j2) return {g, 0};
+    return e;
+  };
+  const Edge_ref Lbc = remap({F.nb[i1], F.ne[i1]}), Lca = remap({F.nb[i2], F.ne[i2]}),
+                 Lad = remap({G.nb[j1], G.ne[j1]}), Ldb = remap({G.nb[j2], G.ne[j2]});
+  link(f, 0, Lca.first, Lca.second);
+  link(f, 1, Lad.first, Lad.second);
+  link(g, 0, Ldb.first, Ldb.second);
+  link(g, 1, Lbc.first, Lbc.second);
+  link(f, 2, g, 2);
+  ++flips_;
+  return true;
+}
+
+template <class Traits_>
+void CGAL_HSM2_DT::restore_delaunay(std::vector<Edge_ref>& st)
+{
+  const std::size_t bound = 100 * nf_ + 100000;
+  std::size_t done = 0;
+  while(!st.empty()) {
+    const Edge_ref e = st.back(); st.pop_back();
+    if(!is_face(e.first) || is_locally_delaunay(e.first, e.second)) continue;
+    const Face_index g = faces_[e.first].nb[e.second];
+    if(!flip(e.first, e.second)) continue;
+    if(++done > bound) throw Numerical_error("Delaunay_triangulation_on_surface: Lawson flips exceeded their work bound");
+    st.emplace_back(e.first, 0); st.emplace_back(e.first, 1); st.emplace_back(g, 0); st.emplace_back(g, 1);
+  }
+}
+
+// ---------------------------------------------------------------- removal
+
+template <class Traits_>
+std::vector<std::pair<std::size_t, int> > CGAL_HSM2_DT::star(Vertex_index v) const
+{
+  std::vector<Edge_ref> r;
+  Edge_ref c(vertices_[v].face, vertices_[v].corner);
+  const std::size_t bound = 3 * nf_ + 3;
+  do {
+    r.push_back(c);
+    const Face& F = faces_[c.first];
+    const int e = (c.second + 2) % 3; // edge (corner before v -> v); the next face counterclockwise
+    c = Edge_ref(F.nb[e], F.ne[e]);
+    if(r.size() > bound) throw Numerical_error("Delaunay_triangulation_on_surface::star: broken adjacency");
+  } while(c != r.front());
+  return r;
+}
+
+template <class Traits_>
+bool CGAL_HSM2_DT::remove(Vertex_index v)
+{
+  if(!is_vertex(v) || nv_ <= 1) return false;
+  std::vector<Face_index> touched; // faces rebuilt by the degree-reducing flips: their edges are tested after
+  bool done = false;
+  for(std::size_t round = 0; round < 4 * nf_ + 16 && !done; ++round) {
+    const std::vector<Edge_ref> st = star(v);
+    if(st.size() == 3 && merge_star_of_degree_3(v, st)) { done = true; break; }
+    bool flipped = false;
+    for(const Edge_ref& c : st) {
+      const Face& F = faces_[c.first];
+      const Face_index g = F.nb[c.second];
+      if(g == c.first) continue;
+      // the flip must not create another edge at v
+      if(F.v[(c.second + 2) % 3] == v || faces_[g].v[(F.ne[c.second] + 2) % 3] == v) continue;
+      if(flip(c.first, c.second)) { touched.push_back(c.first); touched.push_back(g); flipped = true; break; }
+    }
+    if(!flipped) break;
+  }
+  std::vector<Edge_ref> stack;
+  for(Face_index f : touched) if(is_face(f)) for(int i = 0; i < 3; ++i) stack.emplace_back(f, i);
+  restore_delaunay(stack);
+  return done;
+}
+
+template <class Traits_>
+bool CGAL_HSM2_DT::merge_star_of_degree_3(Vertex_index v, const std::vector<Edge_ref>& st)
+{
+  const Face_index f1 = st[0].first, f2 = st[1].first, f3 = st[2].first;
+  if(f1 == f2 || f2 == f3 || f1 == f3) return false;
+  const int c1 = st[0].second, c2 = st[1].second, c3 = st[2].second;
+  const Face F1 = faces_[f1], F2 = faces_[f2], F3 = faces_[f3];
+  const Point_2 x1 = F1.z[(c1 + 1) % 3], x2 = F1.z[(c1 + 2) % 3], x3 = neighbor_apex(f1, (c1 + 2) % 3);
+  if(gt_.orientation_2_object()(x1, x2, x3) != CGAL::LEFT_TURN) return false;
+  const Vertex_index v1 = F1.v[(c1 + 1) % 3], v2 = F1.v[(c1 + 2) % 3], v3 = F2.v[(c2 + 2) % 3];
+  if(v1 == v || v2 == v || v3 == v) return false;
+  auto remap = [&](Edge_ref e) -> Edge_ref {
+    if(e == Edge_ref(f1, (c1 + 1) % 3)) return {f1, 0};
+    if(e == Edge_ref(f2, (c2 + 1) % 3)) return {f1, 1};
+    if(e == Edge_ref(f3, (c3 + 1) % 3)) return {f1, 2};
+    return e;
+  };
+  const int e1 = (c1 + 1) % 3, e2 = (c2 + 1) % 3, e3 = (c3 + 1) % 3;
+  const Edge_ref L1 = remap({F1.nb[e1], F1.ne[e1]}), L2 = remap({F2.nb[e2], F2.ne[e2]}), L3 = remap({F3.nb[e3], F3.ne[e3]});
+  kill_face(f2); kill_face(f3);
+  set_face(f1, x1, x2, x3, v1, v2, v3, F1.ref, F1.to_ref);
+  link(f1, 0, L1.first, L1.second);
+  link(f1, 1, L2.first, L2.second);
+  link(f1, 2, L3.first, L3.second);
+  vertices_[v].alive = false; --nv_;
+  std::vector<Edge_ref> s{{f1, 0}, {f1, 1}, {f1, 2}};
+  restore_delaunay(s);
+  return true;
+}
+
+// ---------------------------------------------------------------- checks and measures
+
+template <class Traits_>
+std::size_t CGAL_HSM2_DT::number_of_non_simplicial_edges() const
+{
+  std::map<std::pair<Vertex_index, Vertex_index>, int> count;
+  std::size_t loops = 0, extra = 0;
+  for(Face_index f = 0; f < faces_.size(); ++f) {
+    if(!faces_[f].alive) continue;
+    for(int i = 0; i < 3; ++i) {
+      const Face_index g = faces_[f].nb[i];
+      if(!(f < g || (f == g && i < faces_[f].ne[i]))) continue;
+      const Vertex_index a = faces_[f].v[i], b = faces_[f].v[(i + 1) % 3];
+      if(a == b) { ++loops; continue; }
+      if(++count[{(std::min)(a, b), (std::max)(a, b)}] > 1) ++extra;
+    }
+  }
+  return loops + extra;
+}
+
+template <class Traits_>
+bool CGAL_HSM2_DT::is_valid(std::string* why, double tol) const
+{
+  auto fail = [&](const std::string& m) { if(why) *why = m; return false; };
+  std::size_t nf = 0, nv = 0;
+  for(Face_index f = 0; f < faces_.size(); ++f) {
+    const Face& F = faces_[f];
+    if(!F.alive) continue;
+    ++nf;
+    if(gt_.orientation_2_object()(F.z[0], F.z[1], F.z[2]) != CGAL::LEFT_TURN) return fail("a chart is not counterclockwise");
+    for(int i = 0; i < 3; ++i) {
+      if(!is_face(F.nb[i])) return fail("a neighbour is not a face");
+      const Face& G = faces_[F.nb[i]];
+      const int j = F.ne[i];
+      if(G.nb[j] != f || G.ne[j] != i) return fail("adjacency is not symmetric");
+      if(G.v[j] != F.v[(i + 1) % 3] || G.v[(j + 1) % 3] != F.v[i]) return fail("glued edges have different vertices");
+      const double l1 = edge_length(f, i), l2 = Geometry::distance(G.z[j], G.z[(j + 1) % 3]);
+      if(!(std::abs(l1 - l2) <= tol * (1 + l1))) return fail("glued edges have different lengths in their charts");
+      if(!is_vertex(F.v[i])) return fail("a corner is not a vertex");
+    }
+  }
+  for(Vertex_index v = 0; v < vertices_.size(); ++v) {
+    if(!vertices_[v].alive) continue;
+    ++nv;
+    const Vertex& V = vertices_[v];
+    if(!is_face(V.face) || faces_[V.face].v[V.corner] != v) return fail("a vertex record points to a wrong corner");
+  }
+  if(nf != nf_ || nv != nv_) return fail("wrong counts");
+  if(nf % 2 != 0) return fail("odd number of faces");
+  return true;
+}
+
+template <class Traits_>
+double CGAL_HSM2_DT::angle_sum(Vertex_index v) const
+{
+  double s = 0;
+  for(const Edge_ref& c : star(v)) {
+    const auto& z = faces_[c.first].z;
+    const int i = c.second;
+    s += Hyperbolic_surface_2::corner_angle(Geometry::distance(z[(i + 1) % 3], z[(i + 2) % 3]),
+                                            Geometry::distance(z[i], z[(i + 1) % 3]),
+                                            Geometry::distance(z[i], z[(i + 2) % 3]));
+  }
+  return s;
+}
+
+template <class Traits_>
+double CGAL_HSM2_DT::area() const
+{
+  double a = 0;
+  for(Face_index f = 0; f < faces_.size(); ++f)
+    if(faces_[f].alive) a += Hyperbolic_surface_2::triangle_area(edge_length(f, 0), edge_length(f, 1), edge_length(f, 2));
+  return a;
+}
+
+#undef CGAL_HSM2_DT
+
+} // namespace Hyperbolic_surface_mesh_2
+} // namespace CGAL
+
+#endif

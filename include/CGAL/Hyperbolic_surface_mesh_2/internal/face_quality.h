@@ -1,0 +1,153 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The quality of a face of a surface triangulation in its chart: circumradius, central angle of the shortest
+// edge, the Ruppert / Chew poor-face tests (exact predicates of the traits where the criterion is a fixed
+// bound), the Steiner point, and the measures reported in the statistics.
+#ifndef CGAL_HYPERBOLIC_SURFACE_MESH_2_INTERNAL_FACE_QUALITY_H
+#define CGAL_HYPERBOLIC_SURFACE_MESH_2_INTERNAL_FACE_QUALITY_H
+
+#include <CGAL/Hyperbolic_surface_2/hyperbolic_triangle.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace CGAL {
+namespace Hyperbolic_surface_mesh_2 {
+namespace internal {
+
+template <class DT>
+class Face_quality
+{
+  typedef typename DT::Point_2 Point_2;
+  typedef typename DT::Face_index Face_index;
+  typedef typename DT::Vertex_index Vertex_index;
+  typedef typename DT::Geometry Geometry;
+
+public:
+  Face_quality(const DT& t, bool chew, double epsilon, double alpha)
+    : t_(t), chew_(chew), epsilon_(epsilon), alpha_(alpha)
+  {
+    const double c = std::cosh(epsilon);
+    cosh2_eps_ = c * c;
+    const double s = std::sin(alpha / 2);
+    sin2_half_alpha_ = s * s;
+  }
+
+  /// true if the circumcircle of f is compact (a hyperbolic circle)
+  bool is_compact(Face_index f) const
+  {
+    const auto& z = t_.lift(f);
+    return t_.geom_traits().is_Delaunay_hyperbolic_2_object()(z[0], z[1], z[2]);
+  }
+  /// hyperbolic circumradius (+infinity if the circumcircle is not compact)
+  double circumradius(Face_index f) const
+  {
+    if(!is_compact(f)) return std::numeric_limits<double>::infinity();
+    const auto& z = t_.lift(f);
+    const Point_2 c = t_.geom_traits().construct_hyperbolic_circumcenter_2_object()(z[0], z[1], z[2]);
+    return Geometry::distance(c, z[0]);
+  }
+  double shortest_edge(Face_index f) const
+  {
+    return (std::min)({t_.edge_length(f, 0), t_.edge_length(f, 1), t_.edge_length(f, 2)});
+  }
+  /// central angle of the shortest edge in the circumcircle: sin(theta / 2) = sinh(d / 2) / sinh(r)
+  double central_angle(Face_index f) const
+  {
+    const double r = circumradius(f);
+    if(!std::isfinite(r)) return 0;
+    const double s = std::sinh(shortest_edge(f) / 2) / std::sinh(r);
+    return 2 * std::asin((std::min)(1.0, s));
+  }
+
+  /// the poor-face test of the criterion
+  bool is_bad(Face_index f) const
+  {
+    const auto& z = t_.lift(f);
+    const auto& gt = t_.geom_traits();
+    if(gt.compare_hyperbolic_circumradius_2_object()(z[0], z[1], z[2], cosh2_eps_) == CGAL::LARGER) return true;
+    if(chew_) return shortest_edge(f) < circumradius(f) * (1 - 1e-12); // central angle < theta*(r)
+    return gt.compare_central_angle_2_object()(z[0], z[1], z[2], sin2_half_alpha_) == CGAL::SMALLER;
+  }
+
+  /// the circumcentre of f in its chart (or the chart's origin, the barycentre, if the circle is not compact)
+  Point_2 steiner_point(Face_index f, bool& barycentre) const
+  {
+    barycentre = !is_compact(f);
+    if(barycentre) return Point_2(0, 0);
+    const auto& z = t_.lift(f);
+    return t_.geom_traits().construct_hyperbolic_circumcenter_2_object()(z[0], z[1], z[2]);
+  }
+
+  /// faces incident to a loop edge, to an extra copy of a multiple edge, or with the vertex triple of another face
+  std::vector<Face_index> faces_at_non_simplicial_edges() const
+  {
+    std::vector<Face_index> r;
+    typedef std::pair<std::pair<Vertex_index, Vertex_index>, std::array<Face_index, 2> > Edge;
+    typedef std::pair<std::array<Vertex_index, 3>, Face_index> Triple;
+    std::vector<Edge> edges;
+    std::vector<Triple> triples;
+    for(Face_index f : t_.faces()) {
+      for(int i = 0; i < 3; ++i) {
+        const Vertex_index a = t_.vertex(f, i), b = t_.vertex(f, (i + 1) % 3);
+        const Face_index g = t_.neighbor(f, i);
+        if(a == b) { r.push_back(f); continue; }
+        if(f < g || (f == g && i < t_.mirror_index(f, i)))
+          edges.push_back(Edge(std::make_pair((std::min)(a, b), (std::max)(a, b)), std::array<Face_index, 2>{{f, g}}));
+      }
+      std::array<Vertex_index, 3> tr{{t_.vertex(f, 0), t_.vertex(f, 1), t_.vertex(f, 2)}};
+      std::sort(tr.begin(), tr.end());
+      triples.push_back(Triple(tr, f));
+    }
+    std::sort(edges.begin(), edges.end());
+    for(std::size_t i = 1; i < edges.size(); ++i)
+      if(edges[i].first == edges[i - 1].first)
+        for(const Edge* e : {&edges[i], &edges[i - 1]}) { r.push_back(e->second[0]); r.push_back(e->second[1]); }
+    std::sort(triples.begin(), triples.end());
+    for(std::size_t i = 1; i < triples.size(); ++i)
+      if(triples[i].first == triples[i - 1].first) { r.push_back(triples[i].second); r.push_back(triples[i - 1].second); }
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end()), r.end());
+    return r;
+  }
+
+  /// fills the measured fields of the statistics
+  template <class Statistics>
+  void measure(Statistics& st) const
+  {
+    st.final_vertices = t_.number_of_vertices();
+    st.final_faces = t_.number_of_faces();
+    st.simplicial_complex = t_.is_simplicial_complex();
+    st.euler_characteristic = t_.euler_characteristic();
+    st.genus = t_.genus();
+    st.minimum_central_angle = CGAL_PI;
+    st.maximum_circumradius = 0;
+    st.minimum_angle = CGAL_PI; st.maximum_angle = 0;
+    for(Face_index f : t_.faces()) {
+      st.minimum_central_angle = (std::min)(st.minimum_central_angle, central_angle(f));
+      st.maximum_circumradius = (std::max)(st.maximum_circumradius, circumradius(f));
+      const double l[3] = {t_.edge_length(f, 0), t_.edge_length(f, 1), t_.edge_length(f, 2)};
+      for(int i = 0; i < 3; ++i) {
+        const double a = Hyperbolic_surface_2::corner_angle(l[(i + 1) % 3], l[i], l[(i + 2) % 3]);
+        st.minimum_angle = (std::min)(st.minimum_angle, a);
+        st.maximum_angle = (std::max)(st.maximum_angle, a);
+      }
+    }
+  }
+
+private:
+  const DT& t_;
+  bool chew_;
+  double epsilon_, alpha_, cosh2_eps_ = 1, sin2_half_alpha_ = 0;
+};
+
+} // namespace internal
+} // namespace Hyperbolic_surface_mesh_2
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,286 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Delaunay refinement on a closed hyperbolic surface: the generalized Ruppert and Chew criteria of the thesis
+// (chapter 3) without input segments, circumcentres located by walking across the transitions, largest
+// circumradius first, then refinement until the triangulation is a simplicial complex.
+#ifndef CGAL_HYPERBOLIC_SURFACE_MESH_2_REFINE_SURFACE_MESH_H
+#define CGAL_HYPERBOLIC_SURFACE_MESH_2_REFINE_SURFACE_MESH_H
+
+#include <CGAL/Hyperbolic_geometry_errors.h>
+#include <CGAL/Hyperbolic_geometry_named_parameters.h>
+#include <CGAL/Hyperbolic_mesh_2/quality_bounds.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/Delaunay_triangulation_on_surface.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/face_quality.h>
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <ostream>
+#include <queue>
+#include <string>
+#include <vector>
+
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hsm2_maximum_circumradius_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hsm2_minimum_central_angle_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hsm2_maximum_insertions_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hsm2_make_simplicial_t)
+
+namespace CGAL {
+namespace Hyperbolic_surface_mesh_2 {
+namespace parameters {
+/// `maximum_circumradius(epsilon [, chain])`: the size bound epsilon on the hyperbolic circumradius (required;
+/// finite, in (0, 10])
+CGAL_HYPERBOLIC_NAMED_PARAMETER(maximum_circumradius, hsm2_maximum_circumradius_t)
+/// `minimum_central_angle(alpha [, chain])`: Ruppert's bound alpha in radians on the central angle of the
+/// shortest edge (default 30 degrees = pi / 6; in (0, 2 pi / 3)); ignored by Chew (whose bound is theta*(r))
+CGAL_HYPERBOLIC_NAMED_PARAMETER(minimum_central_angle, hsm2_minimum_central_angle_t)
+/// `maximum_number_of_insertions(n [, chain])`: the work bound (default 2e7 Steiner points; >= 0, finite)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(maximum_number_of_insertions, hsm2_maximum_insertions_t)
+/// `make_simplicial(bool [, chain])`: after the criteria hold, refine faces at loops and multiple edges until
+/// the triangulation is a simplicial complex (default true)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(make_simplicial, hsm2_make_simplicial_t)
+} // namespace parameters
+
+/// \ingroup PkgHyperbolicSurfaceMesh2Ref
+/// How a refinement ended.
+enum class Refinement_status {
+  SUCCESS,            ///< every face meets the criteria (and the result is a simplicial complex if requested)
+  WORK_BOUND_REACHED, ///< stopped after `maximum_number_of_insertions` Steiner points
+  CANCELLED,          ///< the callback returned false
+  UNREFINABLE_FACES   ///< some faces fail the criteria: their Steiner point could not be inserted (rounding)
+};
+
+inline const char* to_string(Refinement_status s)
+{
+  switch(s) {
+  case Refinement_status::SUCCESS: return "SUCCESS";
+  case Refinement_status::WORK_BOUND_REACHED: return "WORK_BOUND_REACHED";
+  case Refinement_status::CANCELLED: return "CANCELLED";
+  case Refinement_status::UNREFINABLE_FACES: return "UNREFINABLE_FACES";
+  }
+  return "?";
+}
+
+/// \ingroup PkgHyperbolicSurfaceMesh2Ref
+/// Progress snapshot given to the callback (`CGAL::parameters::callback`), every 4096 insertions and at the end.
+struct Refinement_progress
+{
+  std::size_t insertions = 0;
+  std::size_t number_of_vertices = 0;
+  std::size_t queued_faces = 0;          ///< queue size (with stale entries)
+  double current_circumradius = 0;       ///< circumradius of the face being refined
+};
+
+/// \ingroup PkgHyperbolicSurfaceMesh2Ref
+/// What a refinement did and reached. Angles in radians, lengths hyperbolic.
+struct Refinement_statistics
+{
+  Refinement_status status = Refinement_status::SUCCESS;
+  bool chew = false;                        ///< which criterion was used
+  double epsilon = 0, alpha = 0;            ///< the bounds (alpha: Ruppert only)
+  std::size_t initial_vertices = 0, final_vertices = 0, final_faces = 0;
+  std::size_t circumcenters_inserted = 0;   ///< Steiner points for the criteria
+  std::size_t simplicial_insertions = 0;    ///< Steiner points inserted to remove loops and multiple edges
+  std::size_t barycenters_inserted = 0;     ///< faces with a non-compact circumcircle got their barycentre
+  std::size_t unrefinable_faces = 0;        ///< a Steiner point that could not be inserted (rounding)
+  std::size_t faces_failing_criteria = 0;   ///< poor faces left at the end (0 unless the status says otherwise)
+  std::size_t flips = 0;
+  bool simplicial_complex = false;
+  long euler_characteristic = 0;
+  int genus = 0;
+  double minimum_central_angle = 0;         ///< of the shortest edge, over all faces (double precision)
+  double maximum_circumradius = 0;
+  double minimum_angle = 0, maximum_angle = 0; ///< corner angles
+  double h_star = 0;                        ///< Chew's h* = epsilon on a closed surface without segments
+  double termination_margin = 0;            ///< Chew: 2.3101 - h*; Ruppert: 1 - rho(eps, alpha) rho(eps, pi/2)
+  bool termination_guaranteed = false;      ///< the theorem's hypothesis holds (Chew: h* < 2.3101)
+  double seconds = 0;
+
+  friend std::ostream& operator<<(std::ostream& os, const Refinement_statistics& s)
+  {
+    const double deg = 180 / CGAL_PI;
+    return os << (s.chew ? "Chew" : "Ruppert") << " status=" << to_string(s.status) << " epsilon=" << s.epsilon
+              << (s.chew ? "" : " alpha_deg=" + std::to_string(s.alpha * deg)) << " vertices=" << s.initial_vertices
+              << "->" << s.final_vertices << " faces=" << s.final_faces << " circumcenters=" << s.circumcenters_inserted
+              << " simplicial_insertions=" << s.simplicial_insertions << " barycenters=" << s.barycenters_inserted
+              << " unrefinable=" << s.unrefinable_faces << " failing=" << s.faces_failing_criteria << " flips=" << s.flips
+              << " simplicial=" << s.simplicial_complex << " chi=" << s.euler_characteristic << " genus=" << s.genus
+              << " min_central_angle_deg=" << s.minimum_central_angle * deg << " max_circumradius=" << s.maximum_circumradius
+              << " angles_deg=[" << s.minimum_angle * deg << ", " << s.maximum_angle * deg << "]"
+              << " h*=" << s.h_star << " termination_guaranteed=" << s.termination_guaranteed
+              << " (margin " << s.termination_margin << ") time=" << s.seconds << "s";
+  }
+};
+
+namespace internal {
+
+template <class DT>
+class Surface_refiner
+{
+  typedef typename DT::Point_2 Point_2;
+  typedef typename DT::Face_index Face_index;
+  struct Entry { double key; Face_index f; std::size_t version;
+                 bool operator<(const Entry& o) const { return key < o.key; } };
+
+public:
+  Surface_refiner(DT& t, const Face_quality<DT>& q, std::size_t max_ins,
+                  const std::function<bool(const Refinement_progress&)>& cb, bool verbose)
+    : t_(t), q_(q), max_(max_ins), cb_(cb), verbose_(verbose) {}
+
+  /// refines until no face is bad; returns the status
+  Refinement_status run(Refinement_statistics& st)
+  {
+    for(Face_index f : t_.faces()) push(f);
+    while(!queue_.empty()) {
+      const Entry e = queue_.top(); queue_.pop();
+      if(!t_.is_face(e.f) || t_.version(e.f) != e.version) continue;
+      const Refinement_status s = step(e, st);
+      if(s != Refinement_status::SUCCESS) return s;
+    }
+    return Refinement_status::SUCCESS;
+  }
+
+  /// inserts circumcentres of faces at loops and multiple edges until the triangulation is simplicial
+  Refinement_status make_simplicial(Refinement_statistics& st)
+  {
+    for(std::size_t round = 0; round < 64; ++round) {
+      const std::vector<Face_index> faces = q_.faces_at_non_simplicial_edges();
+      if(faces.empty()) return Refinement_status::SUCCESS;
+      for(Face_index f : faces) {
+        if(!t_.is_face(f)) continue;
+        Entry e{q_.circumradius(f), f, t_.version(f)};
+        const Refinement_status s = step(e, st, true);
+        if(s != Refinement_status::SUCCESS) return s;
+      }
+      run(st); // the new faces may be poor
+    }
+    return Refinement_status::WORK_BOUND_REACHED;
+  }
+
+private:
+  void push(Face_index f)
+  {
+    if(q_.is_bad(f)) queue_.push(Entry{q_.circumradius(f), f, t_.version(f)});
+  }
+
+  Refinement_status step(const Entry& e, Refinement_statistics& st, bool simplicial = false)
+  {
+    if(inserted_ >= max_) return Refinement_status::WORK_BOUND_REACHED;
+    bool barycentre = false;
+    const Point_2 c = q_.steiner_point(e.f, barycentre);
+    const std::size_t nv = t_.number_of_vertices();
+    typename DT::Vertex_index w = DT::null_index;
+    try { w = t_.insert(c, e.f); } catch(const Poincare_disk_domain_error&) { w = DT::null_index; }
+    if(w == DT::null_index || t_.number_of_vertices() == nv) { ++st.unrefinable_faces; return Refinement_status::SUCCESS; }
+    ++inserted_;
+    if(simplicial) ++st.simplicial_insertions; else if(barycentre) ++st.barycenters_inserted; else ++st.circumcenters_inserted;
+    for(const auto& corner : t_.star(w)) push(corner.first);
+    if(inserted_ % 4096 == 0) {
+      Refinement_progress p;
+      p.insertions = inserted_; p.number_of_vertices = t_.number_of_vertices(); p.queued_faces = queue_.size();
+      p.current_circumradius = e.key;
+      if(verbose_) std::cerr << "  refinement: " << p.insertions << " insertions, " << p.number_of_vertices
+                             << " vertices, circumradius " << p.current_circumradius << std::endl;
+      if(cb_ && !cb_(p)) return Refinement_status::CANCELLED;
+    }
+    return Refinement_status::SUCCESS;
+  }
+
+  DT& t_;
+  const Face_quality<DT>& q_;
+  std::size_t max_, inserted_ = 0;
+  std::function<bool(const Refinement_progress&)> cb_;
+  bool verbose_;
+  std::priority_queue<Entry> queue_;
+};
+
+template <class DT, class NamedParameters>
+Refinement_statistics refine(DT& t, bool chew, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  const auto t0 = std::chrono::steady_clock::now();
+  if(is_default_parameter<NamedParameters, CGAL::internal_np::hsm2_maximum_circumradius_t>::value)
+    throw Invalid_option_error("refine_surface_mesh: maximum_circumradius(epsilon) is required");
+  Refinement_statistics st;
+  st.chew = chew;
+  st.epsilon = double(choose_parameter(get_parameter(np, CGAL::internal_np::hsm2_maximum_circumradius_t_v), 0.0));
+  st.alpha = double(choose_parameter(get_parameter(np, CGAL::internal_np::hsm2_minimum_central_angle_t_v), CGAL_PI / 6));
+  const double max_ins = double(choose_parameter(get_parameter(np, CGAL::internal_np::hsm2_maximum_insertions_t_v), 2e7));
+  const bool simplicial = choose_parameter(get_parameter(np, CGAL::internal_np::hsm2_make_simplicial_t_v), true);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const std::function<bool(const Refinement_progress&)> cb =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(const Refinement_progress&)>());
+  if(!(st.epsilon > 0 && st.epsilon <= 10))
+    throw Invalid_option_error("refine_surface_mesh: maximum_circumradius must be in (0, 10]");
+  if(!(st.alpha > 0 && st.alpha < 2 * CGAL_PI / 3))
+    throw Invalid_option_error("refine_surface_mesh: minimum_central_angle must be in (0, 2 pi / 3) radians");
+  if(!(max_ins >= 0 && std::isfinite(max_ins)))
+    throw Invalid_option_error("refine_surface_mesh: maximum_number_of_insertions must be finite and >= 0");
+  st.initial_vertices = t.number_of_vertices();
+  const std::size_t flips0 = t.number_of_flips();
+  const Face_quality<DT> q(t, chew, st.epsilon, st.alpha);
+  Surface_refiner<DT> r(t, q, std::size_t(max_ins), cb, verbose);
+  st.status = r.run(st);
+  if(st.status == Refinement_status::SUCCESS && simplicial) st.status = r.make_simplicial(st);
+  q.measure(st);
+  for(auto f : t.faces()) if(q.is_bad(f)) ++st.faces_failing_criteria;
+  if(st.status == Refinement_status::SUCCESS && st.faces_failing_criteria > 0) st.status = Refinement_status::UNREFINABLE_FACES;
+  st.flips = t.number_of_flips() - flips0;
+  if(chew) {
+    st.h_star = st.epsilon;
+    st.termination_margin = Hyperbolic_mesh_2::Chew_termination_bound - st.h_star;
+  } else {
+    st.termination_margin = Hyperbolic_mesh_2::Ruppert_termination_margin(st.epsilon, st.alpha);
+  }
+  st.termination_guaranteed = st.termination_margin > 0;
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if(verbose) std::cerr << st << std::endl;
+  return st;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgHyperbolicSurfaceMesh2Ref
+  Generalized Ruppert refinement on the surface (thesis Algorithm 6, without input segments): while a face has
+  a circumradius above epsilon or a central angle of its shortest edge below alpha (both decided by the traits'
+  exact predicates `Compare_hyperbolic_circumradius_2`, `Compare_central_angle_2` in the face's chart), insert
+  its circumcentre, located by walking from the face across the transitions; faces are refined largest
+  circumradius first. Then (option `make_simplicial`) faces at loops and multiple edges are refined until the
+  triangulation is a simplicial complex.
+
+  Named parameters: `parameters::maximum_circumradius(epsilon)` (required), `parameters::minimum_central_angle(alpha)`,
+  `parameters::maximum_number_of_insertions(n)`, `parameters::make_simplicial(b)`, and CGAL's
+  `callback(std::function<bool(const Refinement_progress&)>)` and `verbose(bool)`. Options out of range throw
+  `CGAL::Invalid_option_error`. The thesis' termination hypothesis (1 - rho(epsilon, alpha) rho(epsilon, pi/2) > 0)
+  is reported in the statistics, not required: the work bound stops every run.
+  Cost: O(log n) per Steiner point plus the flips and the walk (O(1) expected each).
+*/
+template <class DT, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Refinement_statistics refine_Ruppert(DT& t, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::refine(t, false, np);
+}
+
+/*!
+  \ingroup PkgHyperbolicSurfaceMesh2Ref
+  Generalized Chew refinement on the surface (thesis Algorithm 5, without input segments): a face is poor if its
+  circumradius r exceeds epsilon (exact predicate) or the central angle of its shortest edge is below theta*(r),
+  i.e. its shortest edge is shorter than r (decided in double precision with a relative margin of 1e-12).
+  Termination is guaranteed for h* = epsilon < 2.3101 (thesis Theorem 3.1); the statistics report it. The rest
+  as `refine_Ruppert()` (alpha is ignored).
+*/
+template <class DT, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Refinement_statistics refine_Chew(DT& t, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::refine(t, true, np);
+}
+
+} // namespace Hyperbolic_surface_mesh_2
+} // namespace CGAL
+
+#endif // CGAL_HYPERBOLIC_SURFACE_MESH_2_REFINE_SURFACE_MESH_H

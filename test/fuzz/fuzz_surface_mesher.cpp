@@ -1,0 +1,39 @@
+// libFuzzer target of Hyperbolic_surface_mesh_2: bytes -> genus, points of the disk (any lift), removals and
+// a small refinement; every run must end with a valid triangulation or a documented exception.
+#include <CGAL/Hyperbolic_surface_mesh_2.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+namespace HSM = CGAL::Hyperbolic_surface_mesh_2;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  if(size < 2) return 0;
+  const int genus = 2 + data[0] % 3;
+  const double eps = 0.2 + (data[1] % 64) / 32.0; // 0.2 .. 2.2
+  std::vector<double> v;
+  for(std::size_t i = 2; i + 8 <= size && v.size() < 400; i += 8) {
+    double d; std::memcpy(&d, data + i, 8); v.push_back(d);
+  }
+  try {
+    HSM::Delaunay_triangulation_on_surface<> t(HSM::Fundamental_polygon<K>::regular(genus));
+    std::vector<std::size_t> inserted;
+    for(std::size_t i = 0; i + 1 < v.size(); i += 2) {
+      try { inserted.push_back(t.insert_in_frame(K::Point_2(v[i], v[i + 1]))); }
+      catch(const CGAL::Poincare_disk_domain_error&) {} // points outside the disk, NaN, infinities
+    }
+    for(std::size_t i = 0; i < inserted.size(); i += 3)
+      if(inserted[i] != HSM::Delaunay_triangulation_on_surface<>::null_index && t.is_vertex(inserted[i])) t.remove(inserted[i]);
+    HSM::refine_Chew(t, HSM::parameters::maximum_circumradius(eps, HSM::parameters::maximum_number_of_insertions(2000)));
+    std::string why;
+    if(!t.is_valid(&why, 1e-6) || t.euler_characteristic() != 2 - 2 * genus) __builtin_trap();
+  } catch(const CGAL::Numerical_error&) {
+    // a documented outcome (a work bound of the walk or of the flips)
+  }
+  return 0;
+}
