@@ -74,7 +74,7 @@ public:
     mark_domain(cdt_, prm_.seeds(), prm_.seeds_are_in_domain());
     collect_input();
     if(prm_.corner_lopping()) lop_corners();
-    compute_h_star(); // also the smallest feature size, for the resolution guard of segment splits
+    compute_h_star();
     set_termination_report();
 
     // initial queues
@@ -256,7 +256,6 @@ private:
         } while(++fc != done);
       }
     }
-    min_feature_ = h_feat;
     h_star_ = std::min(h, h_feat);
     if constexpr(is_Chew) st_.h_star = h_star_;
   }
@@ -639,27 +638,11 @@ private:
     else side_f = Orientation(-int(gt_.orientation_2_object()(pa, pb, cdt_.mirror_vertex(f, i)->point())));
     if(stuck_.count(key(a, b))) return Vertex_handle();
     const int seg = segment_id(a, b);
-    // A rounded point of a convex-hull edge must not fall strictly inside the hull (the hull would stop being
-    // convex at it and the triangulation invalid): nudge it away from the opposite vertex of the finite face until
-    // it is on the geodesic or (by a rounding error) outside.
-    Point q = p;
-    if(cdt_.is_infinite(f) || cdt_.is_infinite(g)) {
-      const Face_handle fin = cdt_.is_infinite(f) ? g : f;
-      const Point x = fin->vertex(fin->index(cdt_.is_infinite(f) ? cdt_.mirror_vertex(f, i) : f->vertex(i)))->point();
-      const Orientation inner = gt_.orientation_2_object()(pa, pb, x);
-      double t = 1e-16;
-      while(gt_.orientation_2_object()(pa, pb, q) == inner && t < 1e-6) {
-        const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
-        q = Point(FT(px - t * (CGAL::to_double(x.x()) - px)), FT(py - t * (CGAL::to_double(x.y()) - py)));
-        t *= 4;
-      }
-    }
-    // Resolution guard: a subsegment shorter than 1e-3 times the smallest input feature size (or with a Euclidean
-    // length below 1e-11) is not split: a terminating refinement never goes that far below the local feature size,
-    // and cascades of splits (small angles between non-adjacent features) would otherwise reach the rounding level.
+    // Resolution guard: a subsegment with a Euclidean length below 1e-11 is not split (its rounded split points
+    // are a few ulps from its endpoints).
     const double ex = CGAL::to_double(pa.x()) - CGAL::to_double(pb.x()), ey = CGAL::to_double(pa.y()) - CGAL::to_double(pb.y());
-    if(ex * ex + ey * ey < 1e-22 || approximate_distance(pa, pb) < 1e-3 * min_feature_ ||
-       !insertable_in_edge(q, f, i) || q == pa || q == pb) {
+    Point q;
+    if(ex * ex + ey * ey < 1e-22 || !choose_split_point(p, f, i, q)) {
       stuck_.insert(key(a, b)); ++st_.unsplittable_segments; return Vertex_handle();
     }
     Vertex_handle v = cdt_.insert(q, CDT::EDGE, f, i);
@@ -680,6 +663,61 @@ private:
     } while(++fc != done);
     if(seg >= 0) seg_of_[v] = seg;
     return v;
+  }
+
+  // The split point actually inserted into the constrained edge (f, i) = ab: p (the rounded point of the geodesic
+  // ab) or one of the floating-point neighbours of p (up to 2 ulps per coordinate, nearest first), the first one
+  // such that (exact predicates)
+  // - the four new faces are positively oriented (`insertable_in_edge`);
+  // - on a convex-hull edge, it is not strictly inside the hull (the hull would stop being convex at it);
+  // - the two new unconstrained edges from it to the opposite vertices x are locally Delaunay.
+  // The last condition is the one CGAL's insertion into an edge does not restore: `flip_around` only tests the
+  // link edges of the new vertex, because the edges x q are Delaunay when q is exactly on ab. A rounded q is
+  // off the geodesic; with a short subsegment and a far apex x, the circle through x, a, q can contain b (the
+  // Ruppert outputs that were not Delaunay). False if no candidate qualifies (the segment is then unsplittable).
+  bool choose_split_point(const Point& p, Face_handle f, int i, Point& out) const
+  {
+    const Point &pa = f->vertex(CDT::ccw(i))->point(), &pb = f->vertex(CDT::cw(i))->point();
+    const Face_handle g = f->neighbor(i);
+    const bool hull = cdt_.is_infinite(f) || cdt_.is_infinite(g);
+    Orientation inner = COLLINEAR;
+    if(hull) {
+      const Face_handle fin = cdt_.is_infinite(f) ? g : f;
+      const int j = fin == f ? i : cdt_.mirror_index(f, i);
+      inner = gt_.orientation_2_object()(pa, pb, fin->vertex(j)->point());
+    }
+    const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
+    if(!std::isfinite(px) || !std::isfinite(py)) return false;
+    auto step = [](double v, int k) {
+      for(; k > 0; --k) v = std::nextafter(v, std::numeric_limits<double>::infinity());
+      for(; k < 0; ++k) v = std::nextafter(v, -std::numeric_limits<double>::infinity());
+      return v;
+    };
+    static const int offsets[25][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1},
+                                       {2, 0}, {-2, 0}, {0, 2}, {0, -2}, {2, 1}, {2, -1}, {-2, 1}, {-2, -1},
+                                       {1, 2}, {1, -2}, {-1, 2}, {-1, -2}, {2, 2}, {2, -2}, {-2, 2}, {-2, -2}};
+    for(const auto& o : offsets) {
+      const Point q = (o[0] == 0 && o[1] == 0) ? p : Point(FT(step(px, o[0])), FT(step(py, o[1])));
+      if(q == pa || q == pb) continue;
+      if(hull && gt_.orientation_2_object()(pa, pb, q) == inner) continue;
+      if(!insertable_in_edge(q, f, i) || !new_edges_are_Delaunay(q, f, i)) continue;
+      out = q;
+      return true;
+    }
+    return false;
+  }
+
+  // After inserting q into the edge (f, i) = uw, the edge from q to the opposite vertex x of each finite side is
+  // locally Delaunay: w is not inside (nor on) the circle through x, u, q (positively oriented), exactly.
+  bool new_edges_are_Delaunay(const Point& q, Face_handle f, int i) const
+  {
+    for(Face_handle g : {f, f->neighbor(i)}) {
+      if(cdt_.is_infinite(g)) continue;
+      const int j = (g == f) ? i : cdt_.mirror_index(f, i);
+      const Point &x = g->vertex(j)->point(), &u = g->vertex(CDT::ccw(j))->point(), &w = g->vertex(CDT::cw(j))->point();
+      if(gt_.side_of_oriented_circle_2_object()(x, u, q, w) != ON_NEGATIVE_SIDE) return false;
+    }
+    return true;
   }
 
   // A constructed point is usable if it is finite and strictly inside the disk.
@@ -825,7 +863,6 @@ private:
   Gt gt_;
   Mesh_statistics st_;
   double h_star_ = 0;
-  double min_feature_ = 0; // smallest distance between non-incident input features (after lopping)
   std::size_t next_report_ = 4096;
 
   std::priority_queue<Queued_face> bad_;
