@@ -64,7 +64,7 @@ public:
   {
     const auto t0 = std::chrono::steady_clock::now();
     if(cdt_.dimension() != 2)
-      throw Input_error("the triangulation must have dimension 2 (at least 3 points not on one geodesic)");
+      throw Pslg_error("the triangulation must have dimension 2 (at least 3 points not on one geodesic)");
     for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v)
       check_point_in_open_disk(v->point(), "a vertex of the triangulation");
     st_.initial_vertices = cdt_.number_of_vertices();
@@ -84,6 +84,8 @@ public:
 
     st_.status = refine();
     finish_statistics();
+    if(st_.status == Refinement_status::SUCCESS && (st_.faces_failing_criteria > 0 || encroached_segments_left() > 0))
+      st_.status = Refinement_status::UNREFINED_FACES_LEFT;
     st_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if(prm_.verbose()) std::cerr << "[Hyperbolic_mesh_2] " << crit_.description() << ": " << st_ << std::endl;
     return st_;
@@ -92,34 +94,61 @@ public:
 private:
   // ------------------------------------------------------------------ input
   // Rounded Steiner points on a constrained edge of the convex hull would make the hull non-convex (invalid
-  // triangulation). If some constrained edge is on the hull, a frame of vertices (a regular polygon, convex in the
-  // Klein model, near the circle at infinity) is inserted so that no constrained edge stays on the hull. The frame
-  // is outside the domain, never encroaches and is not an input feature.
+  // triangulation), and a hull edge has no opposite vertex to test encroachment against. So every constrained
+  // edge on the hull gets one frame vertex just beyond it (between the edge and the circle at infinity, exactly
+  // on the other side of its geodesic than the triangulation): the edge is then interior, between the domain and
+  // one out-of-domain face. The frame is outside the domain, never encroaches, is not an input feature, and
+  // counts in the work bound (one operation per vertex). At most one vertex per hull edge, whatever the distance
+  // to the circle at infinity; an edge for which no such point is representable keeps no frame vertex (its
+  // split points are then kept on the hull by `choose_split_point`).
   void add_frame_if_needed()
   {
-    bool needed = false;
+    struct Hull_edge { Point a, b, x; };
+    std::vector<Hull_edge> edges;
     auto fc = cdt_.incident_faces(cdt_.infinite_vertex()), done = fc;
     do {
-      if(cdt_.is_constrained(Edge(fc, fc->index(cdt_.infinite_vertex())))) needed = true;
+      const int i = fc->index(cdt_.infinite_vertex());
+      if(!cdt_.is_constrained(Edge(fc, i))) continue;
+      const Face_handle g = fc->neighbor(i);
+      const int j = cdt_.mirror_index(fc, i);
+      edges.push_back(Hull_edge{g->vertex(CDT::ccw(j))->point(), g->vertex(CDT::cw(j))->point(), g->vertex(j)->point()});
     } while(++fc != done);
-    if(!needed) return;
-    double max_klein = 0;
-    for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v) {
-      const double n2 = std::norm(cplx(v->point()));
-      max_klein = std::max(max_klein, 2 * std::sqrt(n2) / (1 + n2));
+    for(const Hull_edge& e : edges) {
+      if(st_.operations >= prm_.maximum_number_of_operations()) break; // the rest stays unframed (see above)
+      Point p;
+      if(!frame_point(e.a, e.b, e.x, p)) continue;
+      frame_.insert(cdt_.insert(p));
+      ++st_.frame_vertices; ++st_.operations;
     }
-    const double gap = 1.0 - max_klein;
-    const double inner = 1.0 - gap * 2.0 / 3.0, outer = 1.0 - gap / 3.0;
-    const double pi = std::acos(-1.0);
-    const double k_real = std::max(8.0, std::ceil(pi / std::acos(inner / outer)));
-    if(!(k_real <= 1e6)) throw Input_error("input too close to the circle at infinity to frame its convex hull");
-    const int k = int(k_real);
-    const double r = outer / (1.0 + std::sqrt(1.0 - outer * outer)); // Poincare radius of the Klein radius `outer`
-    for(int i = 0; i < k; ++i) {
-      const double t = 2 * pi * (i + 0.5) / k;
-      frame_.insert(cdt_.insert(Point(FT(r * std::cos(t)), FT(r * std::sin(t)))));
+  }
+
+  // A point strictly beyond the geodesic ab from x (exact orientation), inside the disk: on the Klein normal
+  // through the midpoint of the Klein chord ab, half-way (then a quarter, ...) to the circle at infinity.
+  bool frame_point(const Point& a, const Point& b, const Point& x, Point& out) const
+  {
+    auto klein = [](const Point& z) { const std::complex<double> c = cplx(z); return 2.0 * c / (1.0 + std::norm(c)); };
+    const std::complex<double> ka = klein(a), kb = klein(b), kx = klein(x), m = 0.5 * (ka + kb);
+    std::complex<double> n = (kb - ka) * std::complex<double>(0, 1);
+    if(!(std::abs(n) > 0)) return false;
+    n /= std::abs(n);
+    if((n.real() * (kx - m).real() + n.imag() * (kx - m).imag()) > 0) n = -n;
+    const double mn = m.real() * n.real() + m.imag() * n.imag();
+    const double reach = -mn + std::sqrt(std::max(0.0, mn * mn + (1.0 - std::norm(m))));
+    const Orientation inner = gt_.orientation_2_object()(a, b, x);
+    double t = 0.5 * reach;
+    for(int k = 0; k < 60 && t > 0; ++k, t *= 0.5) {
+      const std::complex<double> kp = m + t * n;
+      const double k2 = std::norm(kp);
+      if(!(k2 < 1)) continue;
+      const std::complex<double> z = kp / (1.0 + std::sqrt(1.0 - k2));
+      const Point p(FT(z.real()), FT(z.imag()));
+      if(!Poincare_disk_internal::is_in_open_disk(p)) continue;
+      const Orientation o = gt_.orientation_2_object()(a, b, p);
+      if(o == COLLINEAR || o == inner) continue;
+      out = p;
+      return true;
     }
-    st_.frame_vertices = std::size_t(k);
+    return false;
   }
 
   void collect_input()
@@ -187,6 +216,7 @@ private:
     }
     lop_radius_ = radius;
     for(const auto& s : input_segs_) {
+      if(st_.operations + 2 > prm_.maximum_number_of_operations()) break;
       const Vertex_handle a = s.first, b = s.second;
       const Point pa = a->point(), pb = b->point();
       const double d = approximate_distance(pa, pb);
@@ -839,8 +869,10 @@ private:
       const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
       const double a = approximate_central_angle(p, q, r);
       amin = std::min(amin, a);
-      const bool prot = crit_.badness(f) == Face_badness::BAD_ANGLE && is_protected(f);
+      const Face_badness b = crit_.badness(f);
+      const bool prot = b == Face_badness::BAD_ANGLE && is_protected(f);
       if(prot) ++st_.protected_faces; else amin_u = std::min(amin_u, a);
+      if(b != Face_badness::GOOD && !prot) ++st_.faces_failing_criteria;
       rmax = std::max(rmax, approximate_circumradius(p, q, r));
     }
     st_.minimum_central_angle = std::isfinite(amin) ? amin : 0;
@@ -848,6 +880,19 @@ private:
     st_.maximum_circumradius = rmax;
     Progress p; p.operations = st_.operations; p.number_of_vertices = cdt_.number_of_vertices();
     if(prm_.callback()) prm_.callback()(p);
+  }
+
+  // Ruppert: constrained edges still encroached by a vertex (not a frame vertex) at the end
+  std::size_t encroached_segments_left() const
+  {
+    if(is_Chew) return 0;
+    std::size_t n = 0;
+    for(auto e = cdt_.finite_edges_begin(); e != cdt_.finite_edges_end(); ++e) {
+      if(!cdt_.is_constrained(*e)) continue;
+      const Vertex_handle a = e->first->vertex(CDT::ccw(e->second)), b = e->first->vertex(CDT::cw(e->second));
+      if(encroaches(a, b, e->first->vertex(e->second)) || encroaches(a, b, cdt_.mirror_vertex(e->first, e->second))) ++n;
+    }
+    return n;
   }
 
   // Angles within this much of pi/2 are not lopped: the angle sum defect of a tiny input (Euclidean limit) makes
