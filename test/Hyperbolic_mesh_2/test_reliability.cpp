@@ -230,3 +230,38 @@ CGAL_HC_TEST_CASE(issue12_frame_near_the_circle_at_infinity)
     CGAL_HC_CHECK(non_Delaunay_edges(cdt) == 0);
   }
 }
+
+// Issue 8: Mesh_statistics::minimum_central_angle_unprotected was 0 on good faces with edges of about 1e-5
+// (approximate_central_angle divided by cosh^2 h - 1). Compared here with the exact rational central angle.
+CGAL_HC_TEST_CASE(issue8_central_angles_of_tiny_good_faces)
+{
+  for(double side : {1e-3, 1e-5, 1e-7}) {
+    const double cx = 0.5, cy = 0.3;
+    std::vector<Point> pts;
+    for(int i = 0; i < 6; ++i)
+      pts.push_back(Point(cx + side * std::cos(2 * PI * i / 6), cy + side * std::sin(2 * PI * i / 6)));
+    pts.push_back(Point(cx + 0.1 * side, cy));
+    std::vector<std::pair<int, int> > segs;
+    for(int i = 0; i < 6; ++i) segs.push_back(std::make_pair(i, (i + 1) % 6));
+    CDT cdt;
+    HM::insert_geodesic_pslg(cdt, pts, segs);
+    const Stats st = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(deg(40)));
+    CGAL_HC_CHECK_MSG(st.status == HM::Refinement_status::SUCCESS, st);
+    // exact minimum over the faces of sin^2(alpha/2) = A_min / (cosh^2 h - 1)
+    double exact_min = 10;
+    for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      if(!f->is_in_domain()) continue;
+      const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
+      Q c2;
+      CGAL_HC_CHECK(cosh2_circumradius(p, q, r, c2));
+      const double s2 = CGAL::to_double(std::min({A(p, q), A(q, r), A(r, p)}) / (c2 - 1));
+      exact_min = std::min(exact_min, 2 * std::asin(std::sqrt(std::min(1.0, s2))));
+    }
+    CGAL_HC_CHECK_MSG(exact_min >= deg(40) * (1 - 1e-9), exact_min);
+    CGAL_HC_CHECK_MSG(std::abs(st.minimum_central_angle_unprotected - exact_min) < 1e-6,
+                      side << ": " << st.minimum_central_angle_unprotected << " vs exact " << exact_min);
+    CGAL_HC_CHECK_MSG(std::abs(st.minimum_central_angle - exact_min) < 1e-6, st.minimum_central_angle);
+    const std::vector<double> a = HM::central_angles(cdt);
+    CGAL_HC_CHECK(!a.empty() && std::abs(*std::min_element(a.begin(), a.end()) - exact_min) < 1e-6);
+  }
+}
