@@ -396,6 +396,9 @@ private:
     }
   }
 
+  // true while the work bound allows `n` more operations after the current one(s)
+  bool budget_left(std::size_t n = 0) const { return st_.operations + n < prm_.maximum_number_of_operations(); }
+
   bool report()
   {
     Progress p;
@@ -627,7 +630,7 @@ private:
       const Point p2 = gt_.construct_hyperbolic_point_on_segment_2_object()(a_pt, b_pt, FT(2.0 / 3));
       Vertex_handle v1 = split_segment(a, b, p1);
       if(v1 == Vertex_handle()) return false;
-      Vertex_handle v2 = split_segment(v1, b, p2);
+      Vertex_handle v2 = budget_left(1) ? split_segment(v1, b, p2) : Vertex_handle();
       ++st_.one_third_splits; st_.operations += (v2 == Vertex_handle() ? 1 : 2);
       const double r = L / 3;
       std::vector<Vertex_handle> doomed;
@@ -635,7 +638,7 @@ private:
       if(v2 != Vertex_handle())
         collect_free_near(v2, [&](Vertex_handle x) { return approximate_distance(x->point(), v2->point()) < r; },
                           doomed);
-      for(Vertex_handle x : doomed) remove_free_vertex(x);
+      for(Vertex_handle x : doomed) if(budget_left()) remove_free_vertex(x); // the run ends at the bound
       post_insert(v1);
       if(v2 != Vertex_handle()) post_insert(v2);
       return true;
@@ -647,7 +650,7 @@ private:
       collect_free_near(v, [&](Vertex_handle x) {
         return gt_.side_of_hyperbolic_diametral_circle_2_object()(a_pt, b_pt, x->point()) == ON_BOUNDED_SIDE;
       }, doomed);
-      for(Vertex_handle x : doomed) remove_free_vertex(x);
+      for(Vertex_handle x : doomed) if(budget_left()) remove_free_vertex(x); // the run ends at the bound
       post_insert(v);
       return true;
     }
