@@ -265,3 +265,27 @@ CGAL_HC_TEST_CASE(issue8_central_angles_of_tiny_good_faces)
     CGAL_HC_CHECK(!a.empty() && std::abs(*std::min_element(a.begin(), a.end()) - exact_min) < 1e-6);
   }
 }
+
+// Issue 12: the triangle (-0.3, 0), (0.3, 0), (-0.3 + 0.6 cos a, 0.6 sin a) with a = 0.15 or 0.1 degrees ran away
+// (5e4 operations: 50k vertices, 140k unrefinable faces, 0 protected; 0.2 degrees: 285 vertices). Cause: a
+// Euclidean "almost degenerate new face" test in insertable_in_edge (opposite vertex closer than 1e-3 of the edge
+// length to the split point) refused the corner-lopping split of the second segment of every angle below about
+// 0.17 degrees, so the corner was never lopped nor protected. The test is gone (the exact orientation and
+// Delaunay tests decide); the mesh size now grows like 1 / a, as the strip along the sharp corner needs.
+CGAL_HC_TEST_CASE(issue12_tiny_input_angles_are_lopped)
+{
+  for(double a : {0.15, 0.1, 0.05, 0.01}) {
+    for(int chew = 0; chew < 2; ++chew) {
+      CDT cdt = triangle_with_angle(a);
+      const Params prm = Params().maximum_number_of_operations(5e4);
+      const Stats st = chew ? CGAL::refine_hyperbolic_Chew_mesh_2(cdt, CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT>(0.3), prm)
+                            : CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(deg(30), 0.3), prm);
+      CGAL_HC_CHECK_MSG(st.status == HM::Refinement_status::SUCCESS, a << " " << st);
+      CGAL_HC_CHECK_MSG(st.protected_faces >= 1, st);              // the lopped corner is protected
+      CGAL_HC_CHECK_MSG(st.final_vertices < 200.0 / a, st);        // no runaway: O(1 / a) vertices
+      CGAL_HC_CHECK(cdt.is_valid());
+      CGAL_HC_CHECK(non_Delaunay_edges(cdt) == 0);
+      if(!chew) CGAL_HC_CHECK_MSG(faces_failing_Ruppert(cdt, deg(30), 0.3) <= st.protected_faces, st);
+    }
+  }
+}

@@ -771,9 +771,6 @@ private:
       const Point &x = g->vertex(j)->point(), &u = g->vertex(CDT::ccw(j))->point(), &w = g->vertex(CDT::cw(j))->point();
       if(gt_.orientation_2_object()(x, u, q) != LEFT_TURN || gt_.orientation_2_object()(x, q, w) != LEFT_TURN)
         return false;
-      // an opposite vertex almost on the segment, next to the split point: the new faces would be degenerate
-      const double l2 = CGAL::to_double(CGAL::squared_distance(u, w)), d2 = CGAL::to_double(CGAL::squared_distance(x, q));
-      if(d2 < 1e-6 * l2) return false;
     }
     return true;
   }
