@@ -289,3 +289,19 @@ CGAL_HC_TEST_CASE(issue12_tiny_input_angles_are_lopped)
     }
   }
 }
+
+// Found by fuzz_pslg_mesher: a point cloud with denormal coordinates; a rounded split point of a hull edge, kept
+// outside the edge's geodesic, made the hull reflex at an endpoint (invalid triangulation). The split point must
+// now also keep the hull convex at both endpoints.
+CGAL_HC_TEST_CASE(fuzz_denormal_point_cloud_keeps_a_convex_hull)
+{
+  const std::vector<Point> pts = {Point(4.6262631521697923e-62, 0.00030516907572746276), Point(5.0592322134143646e-321, 0),
+                                  Point(0, 0)};
+  for(double alpha : {10.0, 30.0, 50.0}) {
+    CDT cdt = point_cloud(pts);
+    const Stats st = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(deg(alpha)),
+                                                            Params().maximum_number_of_operations(400));
+    CGAL_HC_CHECK_MSG(cdt.is_valid(), st);
+    CGAL_HC_CHECK(non_Delaunay_edges(cdt) == 0);
+  }
+}

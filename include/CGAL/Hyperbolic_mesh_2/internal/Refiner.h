@@ -702,7 +702,8 @@ private:
   // ab) or one of the floating-point neighbours of p (up to 2 ulps per coordinate, nearest first), the first one
   // such that (exact predicates)
   // - the four new faces are positively oriented (`insertable_in_edge`);
-  // - on a convex-hull edge, it is not strictly inside the hull (the hull would stop being convex at it);
+  // - on a convex-hull edge, it is not strictly inside the hull (the hull would stop being convex at it), and not
+  //   so far outside that the hull stops being convex at a or b;
   // - the two new unconstrained edges from it to the opposite vertices x are locally Delaunay.
   // The last condition is the one CGAL's insertion into an edge does not restore: `flip_around` only tests the
   // link edges of the new vertex, because the edges x q are Delaunay when q is exactly on ab. A rounded q is
@@ -714,10 +715,20 @@ private:
     const Face_handle g = f->neighbor(i);
     const bool hull = cdt_.is_infinite(f) || cdt_.is_infinite(g);
     Orientation inner = COLLINEAR;
+    Point z, w; // the hull neighbours of a (other than b) and of b (other than a)
     if(hull) {
-      const Face_handle fin = cdt_.is_infinite(f) ? g : f;
+      const Face_handle fin = cdt_.is_infinite(f) ? g : f, inf = cdt_.is_infinite(f) ? f : g;
       const int j = fin == f ? i : cdt_.mirror_index(f, i);
       inner = gt_.orientation_2_object()(pa, pb, fin->vertex(j)->point());
+      const Vertex_handle va = f->vertex(CDT::ccw(i)), vb = f->vertex(CDT::cw(i));
+      auto other = [&](Vertex_handle across, Vertex_handle keep) { // third vertex of the infinite face beyond `across`
+        const Face_handle h = inf->neighbor(inf->index(across));
+        for(int k = 0; k < 3; ++k)
+          if(!cdt_.is_infinite(h->vertex(k)) && h->vertex(k) != keep) return h->vertex(k)->point();
+        return keep->point();
+      };
+      z = other(vb, va);
+      w = other(va, vb);
     }
     const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
     if(!std::isfinite(px) || !std::isfinite(py)) return false;
@@ -732,7 +743,11 @@ private:
     for(const auto& o : offsets) {
       const Point q = (o[0] == 0 && o[1] == 0) ? p : Point(FT(step(px, o[0])), FT(step(py, o[1])));
       if(q == pa || q == pb) continue;
-      if(hull && gt_.orientation_2_object()(pa, pb, q) == inner) continue;
+      // on the hull: not strictly inside, and the hull stays convex at a and b
+      if(hull && (gt_.orientation_2_object()(pa, pb, q) == inner ||
+                  (z != pb && gt_.orientation_2_object()(z, pa, q) == -inner) ||
+                  (w != pa && gt_.orientation_2_object()(q, pb, w) == -inner)))
+        continue;
       if(!insertable_in_edge(q, f, i) || !new_edges_are_Delaunay(q, f, i)) continue;
       out = q;
       return true;
