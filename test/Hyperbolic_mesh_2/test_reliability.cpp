@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -304,4 +305,13 @@ CGAL_HC_TEST_CASE(fuzz_denormal_point_cloud_keeps_a_convex_hull)
     CGAL_HC_CHECK_MSG(cdt.is_valid(), st);
     CGAL_HC_CHECK(non_Delaunay_edges(cdt) == 0);
   }
+}
+
+// Issue 8 (names): Hyperbolic_Ruppert_mesh_criteria_2 is the Ruppert criteria class.
+CGAL_HC_TEST_CASE(issue8_Ruppert_criteria_name)
+{
+  static_assert(std::is_same<CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>, CGAL::Hyperbolic_mesh_criteria_2<CDT> >::value, "");
+  CDT cdt = triangle_with_angle(60);
+  const Stats st = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(deg(40), 0.2));
+  CGAL_HC_CHECK_MSG(st.status == HM::Refinement_status::SUCCESS && faces_failing_Ruppert(cdt, deg(40), 0.2) == 0, st);
 }
