@@ -115,18 +115,18 @@ int main(int argc, char** argv)
     run_h(gl, "Ruppert_euclidean_limit", [&](CDT& cdt, const Pslg& g) {
       return CGAL::refine_hyperbolic_Ruppert_mesh_2(
           cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>::from_sin2_half_angle(0.125, 2 * s * S_e / std::sqrt(3.0)),
-          HM::parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()));
+          HM::parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()).maximum_number_of_operations(2e7));
     });
     // genuinely hyperbolic runs on the PSLG at scale 1, with a hyperbolic circumradius bound eps
     const double eps = 2 * S_e / std::sqrt(3.0);
     const Pslg gh = octagon_with_hole(1.0);
     run_h(gh, "Ruppert_hyperbolic_B0.125", [&](CDT& cdt, const Pslg& g) {
       return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>::from_sin2_half_angle(0.125, eps),
-                                                    HM::parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()));
+                                                    HM::parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()).maximum_number_of_operations(2e7));
     });
     run_h(gh, "Chew_hyperbolic", [&](CDT& cdt, const Pslg& g) {
       return CGAL::refine_hyperbolic_Chew_mesh_2(cdt, CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT>(eps),
-                                                 HM::parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()));
+                                                 HM::parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()).maximum_number_of_operations(2e7));
     });
   }
 

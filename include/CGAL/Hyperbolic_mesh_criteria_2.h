@@ -150,6 +150,11 @@ private:
   FT sinh2_epsilon_ = FT(0);
 };
 
+/// \ingroup PkgHyperbolicMesh2Ref
+/// The name of the Ruppert criteria consistent with `Hyperbolic_Chew_mesh_criteria_2` (issue 8); the same class.
+template <class CDT>
+using Hyperbolic_Ruppert_mesh_criteria_2 = Hyperbolic_mesh_criteria_2<CDT>;
+
 /*!
   \ingroup PkgHyperbolicMesh2Ref
 

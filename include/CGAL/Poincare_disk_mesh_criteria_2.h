@@ -6,12 +6,14 @@
 #ifndef CGAL_POINCARE_DISK_MESH_CRITERIA_2_H
 #define CGAL_POINCARE_DISK_MESH_CRITERIA_2_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/Mesh_2/Face_badness.h>
 #include <CGAL/Poincare_disk_traits_2/internal/polynomials.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace CGAL {
 
@@ -59,8 +61,8 @@ public:
     }
   };
 
-  /// `min_central_angle` in radians in (0, pi), `max_circumradius` hyperbolic (0 for none); throws
-  /// `std::invalid_argument` otherwise.
+  /// `min_central_angle` in radians in (0, `maximum_min_central_angle`] (60 degrees), `max_circumradius`
+  /// hyperbolic (0 for none, else finite); throws `CGAL::Invalid_option_error` (an `Invalid_input_error`) otherwise.
   Poincare_disk_mesh_criteria_2(double min_central_angle = 2 * 20.7 * 3.14159265358979323846 / 180,
                                 double max_circumradius = 0,
                                 const Geom_traits& traits = Geom_traits())
@@ -70,10 +72,18 @@ public:
     set_max_circumradius(max_circumradius);
   }
 
+  /// The largest accepted `min_central_angle`: 60 degrees (a smallest angle of 30 degrees in the Euclidean limit,
+  /// where Delaunay refinement still terminates in practice; termination is proven up to 41.41 degrees). Larger
+  /// bounds cannot terminate or are not known to: no hyperbolic triangle reaches a central angle of 120 degrees (the
+  /// equilateral Euclidean limit), so `refine_Delaunay_mesh_2` would refine forever.
+  static constexpr double maximum_min_central_angle = 60 * 3.14159265358979323846 / 180;
+
   void set_min_central_angle(double a)
   {
-    if(!(a > 0 && a < 3.14159265358979323846))
-      throw std::invalid_argument("Poincare_disk_mesh_criteria_2: the minimum central angle must be in (0, pi)");
+    if(!(a > 0 && a <= maximum_min_central_angle * (1 + 1e-12)))
+      throw Invalid_option_error("Poincare_disk_mesh_criteria_2: the minimum central angle must be in (0, 60 degrees] "
+                                 "(refinement cannot terminate, or is not known to, for larger bounds), got " +
+                                 std::to_string(a * 180 / 3.14159265358979323846) + " degrees");
     angle_ = a;
     const double s = std::sin(a / 2);
     sin2_ = s * s;
@@ -82,7 +92,7 @@ public:
   void set_max_circumradius(double r)
   {
     if(!(r >= 0) || !std::isfinite(r))
-      throw std::invalid_argument("Poincare_disk_mesh_criteria_2: the maximum circumradius must be >= 0 and finite");
+      throw Invalid_option_error("Poincare_disk_mesh_criteria_2: the maximum circumradius must be >= 0 and finite");
     radius_ = r;
     const double c = std::cosh(r);
     cosh2_ = c * c;

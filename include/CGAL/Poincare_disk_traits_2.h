@@ -24,6 +24,7 @@
 #include <boost/variant.hpp>
 
 #include <cmath>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -107,6 +108,12 @@ private:
   // Exact check that p is a finite point of the open disk. For double input the common case costs one
   // comparison on 1 + |p|^2, which the static filters compute anyway.
   static void check(const Point_2& p, const char* where) { Poincare_disk_internal::check_point_in_disk_fast(p, where); }
+  // A threshold of a comparison predicate must be finite (a NaN would reach GMP's mpq_set_d: SIGFPE).
+  static void check_threshold(const FT& t, const char* where)
+  {
+    if(!Poincare_disk_internal::is_finite_coordinate(t))
+      throw Invalid_input_error(std::string(where) + ": the threshold is not finite");
+  }
 
 public:
   // ================================================================ predicates
@@ -229,7 +236,22 @@ public:
   /// The in-circle predicate: the kernel's Euclidean one on Poincare coordinates (exact and, with Epick,
   /// statically filtered). ON_POSITIVE_SIDE iff s is inside the hyperbolic circle (or horocycle / hypercycle)
   /// through p, q, r when (p, q, r) is positively oriented (Klein orientation). See the class documentation.
-  typedef typename Kernel::Side_of_oriented_circle_2 Side_of_oriented_circle_2;
+  /// Throws `Poincare_disk_domain_error` for a point outside the open disk, as the other predicates.
+  class Side_of_oriented_circle_2
+  {
+  public:
+    typedef Oriented_side result_type;
+    Side_of_oriented_circle_2(const typename Kernel::Side_of_oriented_circle_2& k =
+                                  typename Kernel::Side_of_oriented_circle_2()) : k_(k) {}
+    Oriented_side operator()(const Point_2& p, const Point_2& q, const Point_2& r, const Point_2& s) const
+    {
+      check(p, "Side_of_oriented_circle_2"); check(q, "Side_of_oriented_circle_2");
+      check(r, "Side_of_oriented_circle_2"); check(s, "Side_of_oriented_circle_2");
+      return k_(p, q, r, s);
+    }
+  private:
+    typename Kernel::Side_of_oriented_circle_2 k_;
+  };
 
   /// true iff the Euclidean circumcircle of p, q, r lies inside the open unit disk, i.e. it is a hyperbolic
   /// circle (compact). With `int& ind`, when false, `ind` is the index of the edge (opposite vertex `ind` of
@@ -333,6 +355,8 @@ public:
     typedef Bounded_side result_type;
     Bounded_side operator()(const Point_2& p, const Point_2& q, const Point_2& s) const
     {
+      check(p, "Side_of_hyperbolic_diametral_circle_2"); check(q, "Side_of_hyperbolic_diametral_circle_2");
+      check(s, "Side_of_hyperbolic_diametral_circle_2");
       const Sign sg = Eval::eval(poly, p.x(), p.y(), q.x(), q.y(), s.x(), s.y());
       return sg == POSITIVE ? ON_BOUNDED_SIDE : (sg == ZERO ? ON_BOUNDARY : ON_UNBOUNDED_SIDE);
     }
@@ -352,10 +376,14 @@ public:
     typedef Comparison_result result_type;
     Comparison_result operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
+      check(p, "Compare_hyperbolic_distance_2"); check(q, "Compare_hyperbolic_distance_2");
+      check(r, "Compare_hyperbolic_distance_2");
       return Eval::eval(poly3, p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
     }
     Comparison_result operator()(const Point_2& p, const Point_2& q, const Point_2& r, const Point_2& s) const
     {
+      check(p, "Compare_hyperbolic_distance_2"); check(q, "Compare_hyperbolic_distance_2");
+      check(r, "Compare_hyperbolic_distance_2"); check(s, "Compare_hyperbolic_distance_2");
       return Eval::eval(poly4, p.x(), p.y(), q.x(), q.y(), r.x(), r.y(), s.x(), s.y());
     }
   private:
@@ -388,6 +416,8 @@ public:
     typedef Comparison_result result_type;
     Comparison_result operator()(const Point_2& p, const Point_2& q, const Point_2& r, const FT& sin2_half_theta) const
     {
+      check(p, "Compare_central_angle_2"); check(q, "Compare_central_angle_2"); check(r, "Compare_central_angle_2");
+      check_threshold(sin2_half_theta, "Compare_central_angle_2");
       return Eval::eval(poly, p.x(), p.y(), q.x(), q.y(), r.x(), r.y(), sin2_half_theta);
     }
   private:
@@ -452,6 +482,9 @@ public:
     typedef Comparison_result result_type;
     Comparison_result operator()(const Point_2& p, const Point_2& q, const Point_2& r, const FT& cosh2_bound) const
     {
+      check(p, "Compare_hyperbolic_circumradius_2"); check(q, "Compare_hyperbolic_circumradius_2");
+      check(r, "Compare_hyperbolic_circumradius_2");
+      check_threshold(cosh2_bound, "Compare_hyperbolic_circumradius_2");
       return Eval::eval(poly, p.x(), p.y(), q.x(), q.y(), r.x(), r.y(), cosh2_bound);
     }
   private:
@@ -805,7 +838,8 @@ public:
   Compare_xy_2 compare_xy_2_object() const { return Compare_xy_2(); }
   Less_xy_2 less_xy_2_object() const { return Less_xy_2(); }
   Collinear_2 collinear_2_object() const { return Collinear_2(); }
-  Side_of_oriented_circle_2 side_of_oriented_circle_2_object() const { return kernel_.side_of_oriented_circle_2_object(); }
+  Side_of_oriented_circle_2 side_of_oriented_circle_2_object() const
+  { return Side_of_oriented_circle_2(kernel_.side_of_oriented_circle_2_object()); }
   Is_Delaunay_hyperbolic is_Delaunay_hyperbolic_2_object() const { return Is_Delaunay_hyperbolic(); }
   Side_of_oriented_hyperbolic_segment_2 side_of_oriented_hyperbolic_segment_2_object() const
   { return Side_of_oriented_hyperbolic_segment_2(); }

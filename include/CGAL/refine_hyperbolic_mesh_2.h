@@ -40,7 +40,10 @@ namespace CGAL {
   is below pi/2; reported in `Mesh_statistics::termination_guaranteed`. In every case the work is bounded by
   `parameters.maximum_number_of_operations()` insertions + removals; the status says whether it was reached.
 
-  Throws `Hyperbolic_mesh_2::Input_error` if `cdt` has dimension < 2 or a vertex or seed is not inside the disk.
+  Throws `Hyperbolic_mesh_2::Pslg_error` if `cdt` has dimension < 2, `CGAL::Poincare_disk_domain_error` if a vertex
+  or seed is not inside the disk (both are `Hyperbolic_mesh_2::Input_error` = `CGAL::Invalid_input_error`).
+  Status: `SUCCESS` only if every face of the domain meets `criteria` (exact test at the end) but the counted
+  protected faces; `UNREFINED_FACES_LEFT` if no work is left but some faces fail (rounding limits).
   Cost: O(log n) expected per insertion for the queues plus the CDT insertion (conflict zone size); O(n) to mark
   the domain; O(k (n + m)) for the k small angles.
 */

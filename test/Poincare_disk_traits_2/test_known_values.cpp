@@ -302,6 +302,45 @@ CGAL_HC_TEST_CASE(points_outside_the_disk_are_rejected)
   CGAL_HC_CHECK(Trq().orientation_2_object()(Pq(0, 0), Pq(CGAL::Gmpq(1, 2), 0), inside) == CGAL::LEFT_TURN);
 }
 
+// Issue 12: Side_of_hyperbolic_diametral_circle_2, Angle_2 and Compare_central_angle_2 crashed with a NaN point
+// (SIGFPE in GMP's mpq_set_d in release builds); they, Compare_distance_2 and the other predicates answered
+// silently for points outside the disk. Every public functor now checks its points as the insertion predicates.
+CGAL_HC_TEST_CASE(issue12_every_public_predicate_checks_its_points)
+{
+  typedef CGAL::Poincare_disk_traits_2<Epick> Tr;
+  typedef Epick::Point_2 P;
+  const Tr tr;
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const P ok(0.1, 0.2), ok2(-0.3, 0.4), ok3(0.2, -0.5);
+  const std::vector<P> bad = {P(nan, 0), P(0, nan), P(nan, nan), P(inf, 0), P(1, 0), P(0.6, 0.8), P(2, 3)};
+  for(const P& b : bad) {
+    for(int k = 0; k < 3; ++k) {
+      P v[3] = {ok, ok2, ok3};
+      v[k] = b;
+      CGAL_HC_CHECK_THROWS(tr.side_of_hyperbolic_diametral_circle_2_object()(v[0], v[1], v[2]),
+                           CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.angle_2_object()(v[0], v[1], v[2]), CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.compare_central_angle_2_object()(v[0], v[1], v[2], 0.25), CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.compare_hyperbolic_circumradius_2_object()(v[0], v[1], v[2], 2.0),
+                           CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.compare_distance_2_object()(v[0], v[1], v[2]), CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.compare_hyperbolic_distance_2_object()(v[0], v[1], v[2], ok),
+                           CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.side_of_oriented_circle_2_object()(v[0], v[1], v[2], ok), CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.side_of_oriented_circle_2_object()(ok, v[1], v[2], v[0]), CGAL::Poincare_disk_domain_error);
+      CGAL_HC_CHECK_THROWS(tr.side_of_oriented_hyperbolic_segment_2_object()(v[0], v[1], v[2]),
+                           CGAL::Poincare_disk_domain_error);
+      if(k < 2) CGAL_HC_CHECK_THROWS(tr.compute_squared_distance_2_object()(v[0], v[1]), CGAL::Poincare_disk_domain_error);
+    }
+  }
+  // a non-finite threshold is bad input too (it reached mpq_set_d)
+  CGAL_HC_CHECK_THROWS(tr.compare_central_angle_2_object()(ok, ok2, ok3, nan), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(tr.compare_hyperbolic_circumradius_2_object()(ok, ok2, ok3, inf), CGAL::Invalid_input_error);
+  // good input still answers
+  CGAL_HC_CHECK(tr.angle_2_object()(P(-0.5, 0), P(0, 0), P(0.5, 0)) == CGAL::OBTUSE);
+  CGAL_HC_CHECK(tr.compare_distance_2_object()(P(0, 0), P(0.1, 0), P(0.2, 0)) == CGAL::SMALLER);
+}
+
 CGAL_HC_TEST_CASE(triangulation_insertion_rejects_bad_points)
 {
   typedef CGAL::Poincare_disk_traits_2<Epick> Tr;

@@ -577,6 +577,43 @@ CGAL_HC_TEST_CASE(refine_Delaunay_mesh_2_small_input_angle)
   CGAL_HC_CHECK_MSG(angle < PI / 3 && angle > 0, angle);
 }
 
+// Issue 12: refine_Delaunay_mesh_2 with Poincare_disk_mesh_criteria_2(120 degrees) ran for minutes and hundreds
+// of MB (no hyperbolic triangle has a central angle of 120 degrees). Bounds that cannot terminate are rejected.
+CGAL_HC_TEST_CASE(issue12_mesh_criteria_reject_bounds_that_cannot_terminate)
+{
+  typedef CGAL::Poincare_disk_traits_2<Epick> Tr;
+  typedef CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<Tr>, CGAL::Delaunay_mesh_face_base_2<Tr> > Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<Tr, Tds> CDT;
+  typedef CGAL::Poincare_disk_mesh_criteria_2<CDT> Criteria;
+  typedef Epick::Point_2 P;
+  CGAL_HC_CHECK_THROWS(Criteria(120 * PI / 180), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Criteria(61 * PI / 180), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Criteria(0.0), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Criteria(std::nan("")), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Criteria(0.5, -1.0), CGAL::Invalid_option_error);
+  Criteria c(0.5);
+  CGAL_HC_CHECK_THROWS(c.set_min_central_angle(PI), CGAL::Invalid_option_error);
+  // the largest accepted bound terminates on a geodesic hexagon and every face meets it
+  CDT cdt;
+  const double R = std::tanh(0.5);
+  for(int i = 0; i < 6; ++i)
+    cdt.insert_constraint(P(R * std::cos(PI * i / 3), R * std::sin(PI * i / 3)),
+                          P(R * std::cos(PI * ((i + 1) % 6) / 3), R * std::sin(PI * ((i + 1) % 6) / 3)));
+  const Criteria top(Criteria::maximum_min_central_angle, 0.3);
+  CGAL::refine_Delaunay_mesh_2(cdt, top);
+  CGAL_HC_CHECK(cdt.is_valid());
+  std::size_t in = 0, bad = 0;
+  const Tr tr;
+  const double s = std::sin(Criteria::maximum_min_central_angle / 2);
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if(!f->is_in_domain()) continue;
+    ++in;
+    if(tr.compare_central_angle_2_object()(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                                           s * s * (1 - 1e-9)) == CGAL::SMALLER) ++bad;
+  }
+  CGAL_HC_CHECK_MSG(in > 10 && bad == 0, bad << " of " << in);
+}
+
 CGAL_HC_TEST_CASE(mesher_encroachment_is_not_thales)
 {
   // Angle_2 (the mesher's encroachment test) follows the hyperbolic diametral disk, not the Euclidean angle:

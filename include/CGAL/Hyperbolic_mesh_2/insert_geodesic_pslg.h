@@ -25,9 +25,9 @@ namespace Hyperbolic_mesh_2 {
   handles of the points (in order).
 
   `segments` is a range of pairs of indices into `points`. The checks, all with the traits' exact predicates,
-  throw `Input_error` (a `std::invalid_argument`) with a message naming the offending items:
-  - a point not strictly inside the unit disk, or not finite;
-  - two equal points;
+  throw with a message naming the offending items (both types are `Input_error` = `CGAL::Invalid_input_error`):
+  - `CGAL::Poincare_disk_domain_error`: a point not strictly inside the unit disk, or not finite;
+  - `Pslg_error`: two equal points;
   - a segment index out of range, or a segment from a point to itself;
   - two segments that cross, touch or overlap anywhere but at a common endpoint; a point in the interior of a
     segment.
@@ -51,14 +51,14 @@ insert_geodesic_pslg(CDT& cdt, const PointRange& points, const SegmentRange& seg
     });
     for(std::size_t k = 1; k < order.size(); ++k)
       if(pts[order[k]] == pts[order[k - 1]])
-        throw Input_error("duplicate points " + std::to_string(order[k - 1]) + " and " + std::to_string(order[k]));
+        throw Pslg_error("duplicate points " + std::to_string(order[k - 1]) + " and " + std::to_string(order[k]));
   }
   std::vector<std::pair<std::size_t, std::size_t> > segs;
   for(const auto& s : segments) {
     const std::size_t a = std::size_t(s.first), b = std::size_t(s.second);
     if(a >= pts.size() || b >= pts.size())
-      throw Input_error("segment (" + std::to_string(a) + ", " + std::to_string(b) + ") has an index out of range");
-    if(a == b) throw Input_error("segment (" + std::to_string(a) + ", " + std::to_string(b) + ") has length 0");
+      throw Pslg_error("segment (" + std::to_string(a) + ", " + std::to_string(b) + ") has an index out of range");
+    if(a == b) throw Pslg_error("segment (" + std::to_string(a) + ", " + std::to_string(b) + ") has length 0");
     segs.push_back(std::make_pair(a, b));
   }
   auto orient = gt.orientation_2_object();
@@ -79,7 +79,7 @@ insert_geodesic_pslg(CDT& cdt, const PointRange& points, const SegmentRange& seg
     for(std::size_t i = 0; i < pts.size(); ++i) {
       if(i == segs[k].first || i == segs[k].second) continue;
       if(orient(a, b, pts[i]) == COLLINEAR && strictly_between(a, b, pts[i]))
-        throw Input_error("point " + std::to_string(i) + " lies in the interior of " + name(k));
+        throw Pslg_error("point " + std::to_string(i) + " lies in the interior of " + name(k));
     }
     for(std::size_t l = k + 1; l < segs.size(); ++l) {
       const std::size_t s0 = segs[l].first, s1 = segs[l].second;
@@ -88,24 +88,24 @@ insert_geodesic_pslg(CDT& cdt, const PointRange& points, const SegmentRange& seg
       const Orientation o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
       if(shares) {
         if((s0 == segs[k].first && s1 == segs[k].second) || (s1 == segs[k].first && s0 == segs[k].second))
-          throw Input_error(name(k) + " and " + name(l) + " are the same segment");
+          throw Pslg_error(name(k) + " and " + name(l) + " are the same segment");
         // common endpoint; the two other ends on the same ray of the common geodesic means overlap
         if(o1 == COLLINEAR && o2 == COLLINEAR) {
           const Point& o = (s0 == segs[k].first || s1 == segs[k].first) ? a : b;
           const Point& x = (&o == &a) ? b : a;
           const Point& y = (s0 == segs[k].first || s0 == segs[k].second) ? d : c;
-          if(!strictly_between(x, y, o)) throw Input_error(name(k) + " and " + name(l) + " overlap");
+          if(!strictly_between(x, y, o)) throw Pslg_error(name(k) + " and " + name(l) + " overlap");
         }
         continue;
       }
       if(o1 == COLLINEAR && o2 == COLLINEAR) {
         if(strictly_between(a, b, c) || strictly_between(a, b, d) || strictly_between(c, d, a) ||
            strictly_between(c, d, b))
-          throw Input_error(name(k) + " and " + name(l) + " overlap");
+          throw Pslg_error(name(k) + " and " + name(l) + " overlap");
         continue;
       }
       if(o1 != o2 && o3 != o4)
-        throw Input_error(name(k) + " and " + name(l) + " cross (insert their intersection point as a vertex "
+        throw Pslg_error(name(k) + " and " + name(l) + " cross (insert their intersection point as a vertex "
                           "and split them)");
     }
   }

@@ -6,7 +6,11 @@
 #ifndef CGAL_HYPERBOLIC_MESH_2_MESH_TYPES_H
 #define CGAL_HYPERBOLIC_MESH_2_MESH_TYPES_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
+
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <functional>
 #include <iterator>
 #include <ostream>
@@ -18,20 +22,31 @@ namespace CGAL {
 namespace Hyperbolic_mesh_2 {
 
 /// \ingroup PkgHyperbolicMesh2Ref
-/// Thrown for invalid input (points outside the disk, duplicate points, crossing or overlapping segments,
-/// a CDT of dimension < 2, seeds outside the disk).
-class Input_error : public std::invalid_argument
+/// Thrown for a planar geodesic graph or a triangulation the refiners cannot take: duplicate points, crossing or
+/// overlapping segments, a segment index out of range, a triangulation of dimension < 2.
+class Pslg_error : public CGAL::Invalid_input_error
 {
 public:
-  explicit Input_error(const std::string& what) : std::invalid_argument("Hyperbolic_mesh_2: " + what) {}
+  explicit Pslg_error(const std::string& what) : CGAL::Invalid_input_error("Hyperbolic_mesh_2: " + what) {}
 };
+
+/// \ingroup PkgHyperbolicMesh2Ref
+/// Every input error of the package (the shared `CGAL::Invalid_input_error`): `Pslg_error`,
+/// `CGAL::Poincare_disk_domain_error` for a point, vertex or seed not in the open unit disk,
+/// `CGAL::Invalid_option_error` for an option out of its range.
+typedef CGAL::Invalid_input_error Input_error;
 
 /// \ingroup PkgHyperbolicMesh2Ref
 /// How the refinement ended.
 enum class Refinement_status {
-  SUCCESS,            ///< no poor face and no encroached segment is left (protected faces aside, see statistics)
+  SUCCESS,            ///< every face of the domain meets the criteria, except the protected faces at input angles
+                      ///< below pi/2 (`Mesh_statistics::protected_faces`, by design: thesis Fig. 3.6); no
+                      ///< encroached segment is left. Checked with the exact criteria on every face at the end.
   WORK_BOUND_REACHED, ///< stopped after `maximum_number_of_operations()` insertions + removals
-  CANCELLED           ///< the progress callback returned false
+  CANCELLED,          ///< the progress callback returned false
+  UNREFINED_FACES_LEFT ///< no work is left, but `Mesh_statistics::faces_failing_criteria` faces of the domain fail
+                      ///< the criteria and are not protected: their Steiner points or split points could not be
+                      ///< inserted in double precision (`unrefinable_faces`, `unsplittable_segments`)
 };
 
 inline const char* to_string(Refinement_status s)
@@ -40,6 +55,7 @@ inline const char* to_string(Refinement_status s)
   case Refinement_status::SUCCESS: return "SUCCESS";
   case Refinement_status::WORK_BOUND_REACHED: return "WORK_BOUND_REACHED";
   case Refinement_status::CANCELLED: return "CANCELLED";
+  case Refinement_status::UNREFINED_FACES_LEFT: return "UNREFINED_FACES_LEFT";
   }
   return "?";
 }
@@ -62,6 +78,10 @@ struct Progress
       CGAL::Hyperbolic_mesh_2::parameters<Point>().seeds(holes.begin(), holes.end()).maximum_number_of_operations(1e6));
   \endcode
 */
+/// \ingroup PkgHyperbolicMesh2Ref
+/// The default work bound of the refiners (see `Mesh_parameters::maximum_number_of_operations`).
+constexpr std::size_t default_maximum_number_of_operations = 1000000;
+
 template <class Point_2>
 class Mesh_parameters
 {
@@ -72,11 +92,16 @@ public:
   Mesh_parameters& seeds(InputIterator begin, InputIterator end) { seeds_.assign(begin, end); return *this; }
   Mesh_parameters& seeds_are_in_domain(bool b) { seeds_in_ = b; return *this; }
   /// Work bound: the refinement stops with `WORK_BOUND_REACHED` after this many vertex insertions + removals
-  /// (default 20 000 000).
+  /// (frame and corner-lopping vertices included). Default `default_maximum_number_of_operations` = 1 000 000:
+  /// at 10^5 to 10^6 operations per second on well-shaped input that is 1 to 10 seconds; on degenerate input
+  /// (near the circle at infinity, tiny input angles) where most operations fail or are undone, at worst about
+  /// 1000 operations per second, i.e. 15 minutes. Values above 10^15 (and +infinity) are clamped to 10^15.
+  /// Throws `CGAL::Invalid_option_error` for a negative value or NaN.
   Mesh_parameters& maximum_number_of_operations(double n)
   {
-    if(!(n >= 0)) throw std::invalid_argument("maximum_number_of_operations must be >= 0");
-    max_ops_ = static_cast<std::size_t>(n); return *this;
+    if(!(n >= 0)) throw CGAL::Invalid_option_error("Hyperbolic_mesh_2: maximum_number_of_operations must be >= 0");
+    max_ops_ = n >= 1e15 ? std::size_t(1000000000000000ull) : static_cast<std::size_t>(n);
+    return *this;
   }
   /// Corner lopping (thesis Fig. 3.6) at input angles below pi/2 (default on).
   Mesh_parameters& corner_lopping(bool b) { lopping_ = b; return *this; }
@@ -98,7 +123,7 @@ public:
 private:
   std::vector<Point_2> seeds_;
   bool seeds_in_ = false;
-  std::size_t max_ops_ = 20000000;
+  std::size_t max_ops_ = default_maximum_number_of_operations;
   bool lopping_ = true, off_centers_ = false, verbose_ = false;
   std::function<bool(const Progress&)> callback_;
 };
@@ -126,7 +151,9 @@ struct Mesh_statistics
   std::size_t small_input_angles = 0;       ///< input corners with angle < pi/2
   std::size_t protected_faces = 0;          ///< poor faces left at small input angles (by design, thesis Fig 3.6)
   std::size_t unrefinable_faces = 0;        ///< poor faces whose Steiner point could not be inserted (rounding)
-  std::size_t unsplittable_segments = 0;    ///< subsegments whose rounded split point would invert a face
+  std::size_t unsplittable_segments = 0;    ///< subsegments without a usable rounded split point (an inverted face
+                                            ///< or a non-Delaunay edge in every candidate)
+  std::size_t faces_failing_criteria = 0;   ///< in-domain faces that fail the criteria and are not protected
   std::size_t in_domain_faces = 0;
   double minimum_central_angle = 0;         ///< over in-domain faces (approximate, double)
   double minimum_central_angle_unprotected = 0; ///< same, ignoring the protected faces at small input angles
@@ -150,7 +177,7 @@ struct Mesh_statistics
               << " min_central_angle_deg=" << s.minimum_central_angle * 57.29577951308232
               << " (unprotected " << s.minimum_central_angle_unprotected * 57.29577951308232 << ")"
               << " max_circumradius=" << s.maximum_circumradius << " protected=" << s.protected_faces
-              << " unrefinable=" << s.unrefinable_faces << " unsplittable=" << s.unsplittable_segments << " h*=" << s.h_star
+              << " failing=" << s.faces_failing_criteria << " unrefinable=" << s.unrefinable_faces << " unsplittable=" << s.unsplittable_segments << " h*=" << s.h_star
               << " termination_guaranteed=" << s.termination_guaranteed << " (" << s.termination_note << ")"
               << " time=" << s.seconds << "s";
   }

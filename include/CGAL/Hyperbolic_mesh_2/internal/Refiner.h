@@ -64,7 +64,7 @@ public:
   {
     const auto t0 = std::chrono::steady_clock::now();
     if(cdt_.dimension() != 2)
-      throw Input_error("the triangulation must have dimension 2 (at least 3 points not on one geodesic)");
+      throw Pslg_error("the triangulation must have dimension 2 (at least 3 points not on one geodesic)");
     for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v)
       check_point_in_open_disk(v->point(), "a vertex of the triangulation");
     st_.initial_vertices = cdt_.number_of_vertices();
@@ -74,7 +74,7 @@ public:
     mark_domain(cdt_, prm_.seeds(), prm_.seeds_are_in_domain());
     collect_input();
     if(prm_.corner_lopping()) lop_corners();
-    compute_h_star(); // also the smallest feature size, for the resolution guard of segment splits
+    compute_h_star();
     set_termination_report();
 
     // initial queues
@@ -84,6 +84,8 @@ public:
 
     st_.status = refine();
     finish_statistics();
+    if(st_.status == Refinement_status::SUCCESS && (st_.faces_failing_criteria > 0 || encroached_segments_left() > 0))
+      st_.status = Refinement_status::UNREFINED_FACES_LEFT;
     st_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if(prm_.verbose()) std::cerr << "[Hyperbolic_mesh_2] " << crit_.description() << ": " << st_ << std::endl;
     return st_;
@@ -92,34 +94,61 @@ public:
 private:
   // ------------------------------------------------------------------ input
   // Rounded Steiner points on a constrained edge of the convex hull would make the hull non-convex (invalid
-  // triangulation). If some constrained edge is on the hull, a frame of vertices (a regular polygon, convex in the
-  // Klein model, near the circle at infinity) is inserted so that no constrained edge stays on the hull. The frame
-  // is outside the domain, never encroaches and is not an input feature.
+  // triangulation), and a hull edge has no opposite vertex to test encroachment against. So every constrained
+  // edge on the hull gets one frame vertex just beyond it (between the edge and the circle at infinity, exactly
+  // on the other side of its geodesic than the triangulation): the edge is then interior, between the domain and
+  // one out-of-domain face. The frame is outside the domain, never encroaches, is not an input feature, and
+  // counts in the work bound (one operation per vertex). At most one vertex per hull edge, whatever the distance
+  // to the circle at infinity; an edge for which no such point is representable keeps no frame vertex (its
+  // split points are then kept on the hull by `choose_split_point`).
   void add_frame_if_needed()
   {
-    bool needed = false;
+    struct Hull_edge { Point a, b, x; };
+    std::vector<Hull_edge> edges;
     auto fc = cdt_.incident_faces(cdt_.infinite_vertex()), done = fc;
     do {
-      if(cdt_.is_constrained(Edge(fc, fc->index(cdt_.infinite_vertex())))) needed = true;
+      const int i = fc->index(cdt_.infinite_vertex());
+      if(!cdt_.is_constrained(Edge(fc, i))) continue;
+      const Face_handle g = fc->neighbor(i);
+      const int j = cdt_.mirror_index(fc, i);
+      edges.push_back(Hull_edge{g->vertex(CDT::ccw(j))->point(), g->vertex(CDT::cw(j))->point(), g->vertex(j)->point()});
     } while(++fc != done);
-    if(!needed) return;
-    double max_klein = 0;
-    for(auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v) {
-      const double n2 = std::norm(cplx(v->point()));
-      max_klein = std::max(max_klein, 2 * std::sqrt(n2) / (1 + n2));
+    for(const Hull_edge& e : edges) {
+      if(st_.operations >= prm_.maximum_number_of_operations()) break; // the rest stays unframed (see above)
+      Point p;
+      if(!frame_point(e.a, e.b, e.x, p)) continue;
+      frame_.insert(cdt_.insert(p));
+      ++st_.frame_vertices; ++st_.operations;
     }
-    const double gap = 1.0 - max_klein;
-    const double inner = 1.0 - gap * 2.0 / 3.0, outer = 1.0 - gap / 3.0;
-    const double pi = std::acos(-1.0);
-    const double k_real = std::max(8.0, std::ceil(pi / std::acos(inner / outer)));
-    if(!(k_real <= 1e6)) throw Input_error("input too close to the circle at infinity to frame its convex hull");
-    const int k = int(k_real);
-    const double r = outer / (1.0 + std::sqrt(1.0 - outer * outer)); // Poincare radius of the Klein radius `outer`
-    for(int i = 0; i < k; ++i) {
-      const double t = 2 * pi * (i + 0.5) / k;
-      frame_.insert(cdt_.insert(Point(FT(r * std::cos(t)), FT(r * std::sin(t)))));
+  }
+
+  // A point strictly beyond the geodesic ab from x (exact orientation), inside the disk: on the Klein normal
+  // through the midpoint of the Klein chord ab, half-way (then a quarter, ...) to the circle at infinity.
+  bool frame_point(const Point& a, const Point& b, const Point& x, Point& out) const
+  {
+    auto klein = [](const Point& z) { const std::complex<double> c = cplx(z); return 2.0 * c / (1.0 + std::norm(c)); };
+    const std::complex<double> ka = klein(a), kb = klein(b), kx = klein(x), m = 0.5 * (ka + kb);
+    std::complex<double> n = (kb - ka) * std::complex<double>(0, 1);
+    if(!(std::abs(n) > 0)) return false;
+    n /= std::abs(n);
+    if((n.real() * (kx - m).real() + n.imag() * (kx - m).imag()) > 0) n = -n;
+    const double mn = m.real() * n.real() + m.imag() * n.imag();
+    const double reach = -mn + std::sqrt(std::max(0.0, mn * mn + (1.0 - std::norm(m))));
+    const Orientation inner = gt_.orientation_2_object()(a, b, x);
+    double t = 0.5 * reach;
+    for(int k = 0; k < 60 && t > 0; ++k, t *= 0.5) {
+      const std::complex<double> kp = m + t * n;
+      const double k2 = std::norm(kp);
+      if(!(k2 < 1)) continue;
+      const std::complex<double> z = kp / (1.0 + std::sqrt(1.0 - k2));
+      const Point p(FT(z.real()), FT(z.imag()));
+      if(!Poincare_disk_internal::is_in_open_disk(p)) continue;
+      const Orientation o = gt_.orientation_2_object()(a, b, p);
+      if(o == COLLINEAR || o == inner) continue;
+      out = p;
+      return true;
     }
-    st_.frame_vertices = std::size_t(k);
+    return false;
   }
 
   void collect_input()
@@ -187,6 +216,7 @@ private:
     }
     lop_radius_ = radius;
     for(const auto& s : input_segs_) {
+      if(st_.operations + 2 > prm_.maximum_number_of_operations()) break;
       const Vertex_handle a = s.first, b = s.second;
       const Point pa = a->point(), pb = b->point();
       const double d = approximate_distance(pa, pb);
@@ -256,7 +286,6 @@ private:
         } while(++fc != done);
       }
     }
-    min_feature_ = h_feat;
     h_star_ = std::min(h, h_feat);
     if constexpr(is_Chew) st_.h_star = h_star_;
   }
@@ -366,6 +395,9 @@ private:
       catch(const Poincare_disk_domain_error&) { ++st_.unrefinable_faces; } // a constructed point left the disk
     }
   }
+
+  // true while the work bound allows `n` more operations after the current one(s)
+  bool budget_left(std::size_t n = 0) const { return st_.operations + n < prm_.maximum_number_of_operations(); }
 
   bool report()
   {
@@ -598,7 +630,7 @@ private:
       const Point p2 = gt_.construct_hyperbolic_point_on_segment_2_object()(a_pt, b_pt, FT(2.0 / 3));
       Vertex_handle v1 = split_segment(a, b, p1);
       if(v1 == Vertex_handle()) return false;
-      Vertex_handle v2 = split_segment(v1, b, p2);
+      Vertex_handle v2 = budget_left(1) ? split_segment(v1, b, p2) : Vertex_handle();
       ++st_.one_third_splits; st_.operations += (v2 == Vertex_handle() ? 1 : 2);
       const double r = L / 3;
       std::vector<Vertex_handle> doomed;
@@ -606,7 +638,7 @@ private:
       if(v2 != Vertex_handle())
         collect_free_near(v2, [&](Vertex_handle x) { return approximate_distance(x->point(), v2->point()) < r; },
                           doomed);
-      for(Vertex_handle x : doomed) remove_free_vertex(x);
+      for(Vertex_handle x : doomed) if(budget_left()) remove_free_vertex(x); // the run ends at the bound
       post_insert(v1);
       if(v2 != Vertex_handle()) post_insert(v2);
       return true;
@@ -618,7 +650,7 @@ private:
       collect_free_near(v, [&](Vertex_handle x) {
         return gt_.side_of_hyperbolic_diametral_circle_2_object()(a_pt, b_pt, x->point()) == ON_BOUNDED_SIDE;
       }, doomed);
-      for(Vertex_handle x : doomed) remove_free_vertex(x);
+      for(Vertex_handle x : doomed) if(budget_left()) remove_free_vertex(x); // the run ends at the bound
       post_insert(v);
       return true;
     }
@@ -639,27 +671,11 @@ private:
     else side_f = Orientation(-int(gt_.orientation_2_object()(pa, pb, cdt_.mirror_vertex(f, i)->point())));
     if(stuck_.count(key(a, b))) return Vertex_handle();
     const int seg = segment_id(a, b);
-    // A rounded point of a convex-hull edge must not fall strictly inside the hull (the hull would stop being
-    // convex at it and the triangulation invalid): nudge it away from the opposite vertex of the finite face until
-    // it is on the geodesic or (by a rounding error) outside.
-    Point q = p;
-    if(cdt_.is_infinite(f) || cdt_.is_infinite(g)) {
-      const Face_handle fin = cdt_.is_infinite(f) ? g : f;
-      const Point x = fin->vertex(fin->index(cdt_.is_infinite(f) ? cdt_.mirror_vertex(f, i) : f->vertex(i)))->point();
-      const Orientation inner = gt_.orientation_2_object()(pa, pb, x);
-      double t = 1e-16;
-      while(gt_.orientation_2_object()(pa, pb, q) == inner && t < 1e-6) {
-        const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
-        q = Point(FT(px - t * (CGAL::to_double(x.x()) - px)), FT(py - t * (CGAL::to_double(x.y()) - py)));
-        t *= 4;
-      }
-    }
-    // Resolution guard: a subsegment shorter than 1e-3 times the smallest input feature size (or with a Euclidean
-    // length below 1e-11) is not split: a terminating refinement never goes that far below the local feature size,
-    // and cascades of splits (small angles between non-adjacent features) would otherwise reach the rounding level.
+    // Resolution guard: a subsegment with a Euclidean length below 1e-11 is not split (its rounded split points
+    // are a few ulps from its endpoints).
     const double ex = CGAL::to_double(pa.x()) - CGAL::to_double(pb.x()), ey = CGAL::to_double(pa.y()) - CGAL::to_double(pb.y());
-    if(ex * ex + ey * ey < 1e-22 || approximate_distance(pa, pb) < 1e-3 * min_feature_ ||
-       !insertable_in_edge(q, f, i) || q == pa || q == pb) {
+    Point q;
+    if(ex * ex + ey * ey < 1e-22 || !choose_split_point(p, f, i, q)) {
       stuck_.insert(key(a, b)); ++st_.unsplittable_segments; return Vertex_handle();
     }
     Vertex_handle v = cdt_.insert(q, CDT::EDGE, f, i);
@@ -682,6 +698,76 @@ private:
     return v;
   }
 
+  // The split point actually inserted into the constrained edge (f, i) = ab: p (the rounded point of the geodesic
+  // ab) or one of the floating-point neighbours of p (up to 2 ulps per coordinate, nearest first), the first one
+  // such that (exact predicates)
+  // - the four new faces are positively oriented (`insertable_in_edge`);
+  // - on a convex-hull edge, it is not strictly inside the hull (the hull would stop being convex at it), and not
+  //   so far outside that the hull stops being convex at a or b;
+  // - the two new unconstrained edges from it to the opposite vertices x are locally Delaunay.
+  // The last condition is the one CGAL's insertion into an edge does not restore: `flip_around` only tests the
+  // link edges of the new vertex, because the edges x q are Delaunay when q is exactly on ab. A rounded q is
+  // off the geodesic; with a short subsegment and a far apex x, the circle through x, a, q can contain b (the
+  // Ruppert outputs that were not Delaunay). False if no candidate qualifies (the segment is then unsplittable).
+  bool choose_split_point(const Point& p, Face_handle f, int i, Point& out) const
+  {
+    const Point &pa = f->vertex(CDT::ccw(i))->point(), &pb = f->vertex(CDT::cw(i))->point();
+    const Face_handle g = f->neighbor(i);
+    const bool hull = cdt_.is_infinite(f) || cdt_.is_infinite(g);
+    Orientation inner = COLLINEAR;
+    Point z, w; // the hull neighbours of a (other than b) and of b (other than a)
+    if(hull) {
+      const Face_handle fin = cdt_.is_infinite(f) ? g : f, inf = cdt_.is_infinite(f) ? f : g;
+      const int j = fin == f ? i : cdt_.mirror_index(f, i);
+      inner = gt_.orientation_2_object()(pa, pb, fin->vertex(j)->point());
+      const Vertex_handle va = f->vertex(CDT::ccw(i)), vb = f->vertex(CDT::cw(i));
+      auto other = [&](Vertex_handle across, Vertex_handle keep) { // third vertex of the infinite face beyond `across`
+        const Face_handle h = inf->neighbor(inf->index(across));
+        for(int k = 0; k < 3; ++k)
+          if(!cdt_.is_infinite(h->vertex(k)) && h->vertex(k) != keep) return h->vertex(k)->point();
+        return keep->point();
+      };
+      z = other(vb, va);
+      w = other(va, vb);
+    }
+    const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
+    if(!std::isfinite(px) || !std::isfinite(py)) return false;
+    auto step = [](double v, int k) {
+      for(; k > 0; --k) v = std::nextafter(v, std::numeric_limits<double>::infinity());
+      for(; k < 0; ++k) v = std::nextafter(v, -std::numeric_limits<double>::infinity());
+      return v;
+    };
+    static const int offsets[25][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1},
+                                       {2, 0}, {-2, 0}, {0, 2}, {0, -2}, {2, 1}, {2, -1}, {-2, 1}, {-2, -1},
+                                       {1, 2}, {1, -2}, {-1, 2}, {-1, -2}, {2, 2}, {2, -2}, {-2, 2}, {-2, -2}};
+    for(const auto& o : offsets) {
+      const Point q = (o[0] == 0 && o[1] == 0) ? p : Point(FT(step(px, o[0])), FT(step(py, o[1])));
+      if(q == pa || q == pb) continue;
+      // on the hull: not strictly inside, and the hull stays convex at a and b
+      if(hull && (gt_.orientation_2_object()(pa, pb, q) == inner ||
+                  (z != pb && gt_.orientation_2_object()(z, pa, q) == -inner) ||
+                  (w != pa && gt_.orientation_2_object()(q, pb, w) == -inner)))
+        continue;
+      if(!insertable_in_edge(q, f, i) || !new_edges_are_Delaunay(q, f, i)) continue;
+      out = q;
+      return true;
+    }
+    return false;
+  }
+
+  // After inserting q into the edge (f, i) = uw, the edge from q to the opposite vertex x of each finite side is
+  // locally Delaunay: w is not inside (nor on) the circle through x, u, q (positively oriented), exactly.
+  bool new_edges_are_Delaunay(const Point& q, Face_handle f, int i) const
+  {
+    for(Face_handle g : {f, f->neighbor(i)}) {
+      if(cdt_.is_infinite(g)) continue;
+      const int j = (g == f) ? i : cdt_.mirror_index(f, i);
+      const Point &x = g->vertex(j)->point(), &u = g->vertex(CDT::ccw(j))->point(), &w = g->vertex(CDT::cw(j))->point();
+      if(gt_.side_of_oriented_circle_2_object()(x, u, q, w) != ON_NEGATIVE_SIDE) return false;
+    }
+    return true;
+  }
+
   // A constructed point is usable if it is finite and strictly inside the disk.
   static bool is_usable(const Point& p)
   {
@@ -700,9 +786,6 @@ private:
       const Point &x = g->vertex(j)->point(), &u = g->vertex(CDT::ccw(j))->point(), &w = g->vertex(CDT::cw(j))->point();
       if(gt_.orientation_2_object()(x, u, q) != LEFT_TURN || gt_.orientation_2_object()(x, q, w) != LEFT_TURN)
         return false;
-      // an opposite vertex almost on the segment, next to the split point: the new faces would be degenerate
-      const double l2 = CGAL::to_double(CGAL::squared_distance(u, w)), d2 = CGAL::to_double(CGAL::squared_distance(x, q));
-      if(d2 < 1e-6 * l2) return false;
     }
     return true;
   }
@@ -801,8 +884,10 @@ private:
       const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
       const double a = approximate_central_angle(p, q, r);
       amin = std::min(amin, a);
-      const bool prot = crit_.badness(f) == Face_badness::BAD_ANGLE && is_protected(f);
+      const Face_badness b = crit_.badness(f);
+      const bool prot = b == Face_badness::BAD_ANGLE && is_protected(f);
       if(prot) ++st_.protected_faces; else amin_u = std::min(amin_u, a);
+      if(b != Face_badness::GOOD && !prot) ++st_.faces_failing_criteria;
       rmax = std::max(rmax, approximate_circumradius(p, q, r));
     }
     st_.minimum_central_angle = std::isfinite(amin) ? amin : 0;
@@ -810,6 +895,19 @@ private:
     st_.maximum_circumradius = rmax;
     Progress p; p.operations = st_.operations; p.number_of_vertices = cdt_.number_of_vertices();
     if(prm_.callback()) prm_.callback()(p);
+  }
+
+  // Ruppert: constrained edges still encroached by a vertex (not a frame vertex) at the end
+  std::size_t encroached_segments_left() const
+  {
+    if(is_Chew) return 0;
+    std::size_t n = 0;
+    for(auto e = cdt_.finite_edges_begin(); e != cdt_.finite_edges_end(); ++e) {
+      if(!cdt_.is_constrained(*e)) continue;
+      const Vertex_handle a = e->first->vertex(CDT::ccw(e->second)), b = e->first->vertex(CDT::cw(e->second));
+      if(encroaches(a, b, e->first->vertex(e->second)) || encroaches(a, b, cdt_.mirror_vertex(e->first, e->second))) ++n;
+    }
+    return n;
   }
 
   // Angles within this much of pi/2 are not lopped: the angle sum defect of a tiny input (Euclidean limit) makes
@@ -825,7 +923,6 @@ private:
   Gt gt_;
   Mesh_statistics st_;
   double h_star_ = 0;
-  double min_feature_ = 0; // smallest distance between non-incident input features (after lopping)
   std::size_t next_report_ = 4096;
 
   std::priority_queue<Queued_face> bad_;

@@ -7,6 +7,7 @@
 #define CGAL_HYPERBOLIC_MESH_2_INTERNAL_INPUT_ANALYSIS_H
 
 #include <CGAL/Hyperbolic_mesh_2/mesh_types.h>
+#include <CGAL/Poincare_disk_traits_2/internal/checks.h>
 #include <CGAL/Handle_hash_function.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
@@ -23,15 +24,12 @@ namespace CGAL {
 namespace Hyperbolic_mesh_2 {
 namespace internal {
 
-/// Throws `Input_error` unless p is a finite point with |p| < 1 (exact on the point's number type).
+/// Throws `CGAL::Poincare_disk_domain_error` unless p is a finite point with |p| < 1: the traits' exact check
+/// (`Poincare_disk_internal::check_point_in_disk`), with the mesher's name for the point in the message.
 template <class Point_2>
 void check_point_in_open_disk(const Point_2& p, const char* what)
 {
-  typedef typename Kernel_traits<Point_2>::Kernel::FT FT;
-  const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
-  if(!std::isfinite(x) || !std::isfinite(y) || !(p.x() * p.x() + p.y() * p.y() < FT(1)))
-    throw Input_error(std::string(what) + " is not inside the open unit disk: (" + std::to_string(x) + ", " +
-                      std::to_string(y) + ")");
+  Poincare_disk_internal::check_point_in_disk(p, (std::string("Hyperbolic_mesh_2: ") + what).c_str());
 }
 
 inline std::complex<double> to_origin(std::complex<double> z, std::complex<double> a)
@@ -86,7 +84,7 @@ void constrain_hull_if_no_constraint(CDT& cdt)
 /// Marks the faces in the domain as `refine_Delaunay_mesh_2` does: the connected components of faces (across
 /// unconstrained edges) not reachable from the infinite faces are in the domain; with seeds, the components that
 /// contain a seed are removed from it (or, if `seeds_are_in_domain`, they are the domain). O(n).
-/// Throws `Input_error` if a seed is not inside the open unit disk.
+/// Throws `CGAL::Poincare_disk_domain_error` if a seed is not inside the open unit disk.
 template <class CDT, class Point_2>
 void mark_domain(CDT& cdt, const std::vector<Point_2>& seeds, bool seeds_are_in_domain)
 {
