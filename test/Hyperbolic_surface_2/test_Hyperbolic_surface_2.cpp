@@ -112,6 +112,21 @@ CGAL_HC_TEST_CASE(disk_geometry_constructions)
   CGAL_HC_CHECK(dist(T.apply_unchecked(g), tg) < 1e-14);
 }
 
+// standard_position must not lose the rotation when the second point is nearly opposite (direction near pi):
+// the image of b is on the positive real axis to the last bits, and transitions compose to the identity around
+// a vertex of a fine mesh (the Ricci embedding's holonomies need it)
+CGAL_HC_TEST_CASE(standard_position_near_the_negative_axis)
+{
+  for(double eps : {1e-4, 1e-7, 1e-9, 0.0}) {
+    const Point_2 a(0.1, 0.05), b(-0.6, 0.05 + eps);
+    const auto t = G::standard_position(a, b);
+    const Point_2 ta = t.apply_unchecked(a), tb = t.apply_unchecked(b);
+    CGAL_HC_CHECK_MSG(std::abs(ta.x()) < 1e-16 && std::abs(ta.y()) < 1e-16, eps);
+    CGAL_HC_CHECK_MSG(tb.x() > 0 && std::abs(tb.y()) < 1e-15 * tb.x(), "eps " << eps << ": image " << tb);
+    CGAL_HC_CHECK(std::abs(G::distance_to_origin(tb) - G::distance(a, b)) < 1e-13);
+  }
+}
+
 CGAL_HC_TEST_CASE(regular_polygon_surfaces_charts_and_transitions)
 {
   for(int g : {2, 3, 5}) {

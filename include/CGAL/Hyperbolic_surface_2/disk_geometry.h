@@ -63,7 +63,14 @@ struct Disk_geometry
     const Point_2 bb = t.apply_unchecked(b);
     const FT r = sqrt(squared_norm(bb));
     if(!(r > 0)) return t;
-    return Isometry_2::rotation(bb.x() / r, -bb.y() / r) * t;
+    // the rotation z -> w z, w = conj(bb) / r, as alpha z / conj(alpha) with alpha = r + x - i y (a multiple
+    // of 1 + w) or alpha = -y + i (r - x) (a multiple of i (1 - w)), whichever does not cancel: 1 + cos for
+    // an angle near pi loses all digits of the rotation (1e-8 rad for a direction 1e-4 rad off the negative axis)
+    // (alpha scaled to modulus 1: determinant 1, so long products neither overflow nor underflow)
+    const FT x = bb.x(), y = bb.y();
+    const FT ar = x >= FT(0) ? r + x : -y, ai = x >= FT(0) ? -y : r - x;
+    const FT n = sqrt(ar * ar + ai * ai);
+    return Isometry_2(ar / n, ai / n, FT(0), FT(0)) * t;
   }
 
   /// the orientation-preserving isometry taking p1 to p2 and the geodesic ray p1 q1 to the ray p2 q2 (q1 to
