@@ -120,7 +120,7 @@ CGAL_HC_TEST_CASE(options_out_of_range)
   CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(m, CGAL::parameters::accuracy(-1.0)), CGAL::Invalid_option_error);
   CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(m, CGAL::parameters::number_of_iterations(-3)), CGAL::Invalid_option_error);
   if(!RF::has_cholmod())
-    CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::CHOLMOD_SUPERNODAL)),
+    CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::SUPERNODAL_CHOLMOD)),
                          CGAL::Invalid_option_error);
-  else CGAL_HC_CHECK(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::CHOLMOD_SUPERNODAL)).converged());
+  else CGAL_HC_CHECK(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::SUPERNODAL_CHOLMOD)).converged());
 }

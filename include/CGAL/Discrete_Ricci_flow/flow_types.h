@@ -104,7 +104,7 @@ inline std::string message(const std::string& what) { return "CGAL::Discrete_Ric
 /// The sparse Cholesky factorization of the Newton systems. `DEFAULT` is CHOLMOD's supernodal Cholesky when
 /// the library was configured with SuiteSparse (macro `CGAL_HC_HAS_CHOLMOD`), else Eigen's `SimplicialLDLT`.
 /// An indefinite Hessian (spherical background) falls back to `SimplicialLDLT` for that iteration.
-enum class Sparse_solver { DEFAULT, CHOLMOD_SUPERNODAL, SIMPLICIAL_LDLT };
+enum class Sparse_solver { DEFAULT, SUPERNODAL_CHOLMOD, SIMPLICIAL_LDLT };
 
 /// \ingroup PkgDiscreteRicciFlowRef
 /// true if CHOLMOD is available (the library was configured with SuiteSparse)

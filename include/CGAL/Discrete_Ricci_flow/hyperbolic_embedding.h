@@ -181,6 +181,21 @@ public:
   /// sign; for the torus |rotation - 1| + |translation|), computed in long double
   double relator_defect() const { return double(product(relator_word()).defect()); }
 
+  /// the conditioning of the relator product: max_k cosh d(0, P_k(0)) over the partial products P_k of
+  /// `relator()` (about the squared norm of the matrices). Rounding errors of the deck transformations are
+  /// amplified by it: `relator_defect()` is at least about 1e-16 times this value, whatever the method.
+  double relator_condition() const
+  {
+    double c = 1;
+    internal::Motion m = internal::Motion::identity(hyperbolic_);
+    for(const int l : relator_word()) {
+      m = (m * letter(l)).normalized();
+      if(hyperbolic_) c = (std::max)(c, double(m.h.alpha_real() * m.h.alpha_real() + m.h.alpha_imag() * m.h.alpha_imag() +
+                                               m.h.beta_real() * m.h.beta_real() + m.h.beta_imag() * m.h.beta_imag()));
+    }
+    return c;
+  }
+
   /// The relator polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (0), k = 0 .. 4g-1, for the letters
   /// w_k of `relator()` (the base vertex's copy is at the origin).
   std::vector<Complex> relator_polygon() const { return polygon(relator_word()); }

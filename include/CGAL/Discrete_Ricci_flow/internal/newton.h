@@ -38,9 +38,9 @@ class Sparse_cholesky
 public:
   explicit Sparse_cholesky(Sparse_solver s)
   {
-    kind_ = s == Sparse_solver::DEFAULT ? (has_cholmod() ? Sparse_solver::CHOLMOD_SUPERNODAL : Sparse_solver::SIMPLICIAL_LDLT) : s;
-    if(kind_ == Sparse_solver::CHOLMOD_SUPERNODAL && !has_cholmod())
-      throw_option_error("sparse_solver(CHOLMOD_SUPERNODAL): the library was configured without CHOLMOD");
+    kind_ = s == Sparse_solver::DEFAULT ? (has_cholmod() ? Sparse_solver::SUPERNODAL_CHOLMOD : Sparse_solver::SIMPLICIAL_LDLT) : s;
+    if(kind_ == Sparse_solver::SUPERNODAL_CHOLMOD && !has_cholmod())
+      throw_option_error("sparse_solver(SUPERNODAL_CHOLMOD): the library was configured without CHOLMOD");
   }
 
   /// true on success; `used` receives the solver that produced x
@@ -48,8 +48,12 @@ public:
              Flow_statistics& st)
   {
 #ifdef CGAL_HC_HAS_CHOLMOD
-    if(kind_ == Sparse_solver::CHOLMOD_SUPERNODAL) {
-      if(!cholmod_) cholmod_.reset(new Eigen::CholmodSupernodalLLT<Sparse_matrix>());
+    if(kind_ == Sparse_solver::SUPERNODAL_CHOLMOD) {
+      if(!cholmod_) {
+        cholmod_.reset(new Eigen::CholmodSupernodalLLT<Sparse_matrix>());
+        cholmod_->cholmod().print = 0;               // an indefinite matrix is not an error here: LDLT takes over
+        cholmod_->cholmod().error_handler = nullptr;
+      }
       if(cholmod_version_ != pattern_version) {
         cholmod_->analyzePattern(H); cholmod_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
       }
