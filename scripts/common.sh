@@ -3,7 +3,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 JOBS="${JOBS:-$(nproc)}"
-DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev cmake make g++ libcgal-demo)
+DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libsuitesparse-dev libopenblas0-serial cmake make g++ libcgal-demo)
 
 install_missing_packages() {
   local missing=()

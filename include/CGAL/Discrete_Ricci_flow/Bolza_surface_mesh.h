@@ -15,7 +15,7 @@
 #include <utility>
 
 namespace CGAL {
-namespace Ricci_flow {
+namespace Discrete_Ricci_flow {
 
 /*!
   \ingroup PkgDiscreteRicciFlowRef
@@ -82,7 +82,7 @@ CGAL::Surface_mesh<Point_3> make_Bolza_surface_mesh(int n)
   return m;
 }
 
-} // namespace Ricci_flow
+} // namespace Discrete_Ricci_flow
 } // namespace CGAL
 
 #endif

@@ -10,6 +10,8 @@
 #include <CGAL/Discrete_Ricci_flow/internal/flow_engine.h>
 #include <CGAL/Discrete_Ricci_flow/internal/mesh_checks.h>
 #include <CGAL/Discrete_Ricci_flow/internal/triangle_geometry.h>
+#include <CGAL/Discrete_Ricci_flow/internal/newton.h>
+#include <CGAL/Hyperbolic_surface_2/Hyperbolic_surface_triangulation.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -29,7 +31,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Ricci_flow {
+namespace Discrete_Ricci_flow {
 
 /*!
   \ingroup PkgDiscreteRicciFlowRef
@@ -50,6 +52,9 @@ namespace Ricci_flow {
   triangle inequalities (the metric is then realized only by the intrinsic triangulation);
   `input_connectivity_is_valid()` tells.
 */
+template <class Point_3> class Discrete_metric;
+namespace internal { struct Metric_access; }
+
 template <class Point_3>
 class Discrete_metric
 {
@@ -119,7 +124,25 @@ public:
     return a;
   }
 
-  // implementation details, filled by compute_metric() (not part of the documented interface)
+  /*!
+    The metric as the shared surface layer's `CGAL::Hyperbolic_surface_2::Hyperbolic_surface_triangulation`
+    on `intrinsic_mesh()` with `edge_length_map()` (hyperbolic background, closed surface of genus >= 2):
+    charts, transitions, developments, the input of `Surface_shortest_words` and of the embedding. The
+    surface refers to this metric's mesh: the metric must outlive it. Named parameters as the layer's
+    constructor (`angle_tolerance`, `require_smooth_metric`).
+    \throws CGAL::Invalid_mesh_error, CGAL::Invalid_metric_error as the layer's constructor.
+  */
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  CGAL::Hyperbolic_surface_2::Hyperbolic_surface_triangulation<Mesh, Edge_length_map>
+  hyperbolic_surface(const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    if(geo_ != Background_geometry::HYPERBOLIC)
+      internal::throw_metric_error("hyperbolic_surface(): the metric has no hyperbolic background");
+    return CGAL::Hyperbolic_surface_2::Hyperbolic_surface_triangulation<Mesh, Edge_length_map>(mesh_, lengths_, np);
+  }
+
+private:
+  friend struct internal::Metric_access;
   Mesh mesh_;
   Edge_length_map lengths_;
   Background_geometry geo_ = Background_geometry::HYPERBOLIC;
@@ -131,10 +154,34 @@ public:
 
 namespace internal {
 
+/// write access to a `Discrete_metric` for the functions that build it
+struct Metric_access
+{
+  template <class P> static typename Discrete_metric<P>::Mesh& mesh(Discrete_metric<P>& m) { return m.mesh_; }
+  template <class P> static Flow_statistics& statistics(Discrete_metric<P>& m) { return m.stats_; }
+  template <class P>
+  static void set(Discrete_metric<P>& m, Background_geometry geo, const std::vector<double>& u,
+                  const std::vector<double>& target, long genus, bool input_valid)
+  {
+    m.geo_ = geo; m.u_ = u; m.target_ = target; m.genus_ = genus; m.input_valid_ = input_valid;
+  }
+  /// creates the length property (all zero) and returns it
+  template <class P>
+  static typename Discrete_metric<P>::Edge_length_map& add_lengths(Discrete_metric<P>& m)
+  {
+    m.lengths_ = m.mesh_.template add_property_map<typename Discrete_metric<P>::Edge_index, double>("e:length", 0.0).first;
+    return m.lengths_;
+  }
+};
+
+} // namespace internal
+
+namespace internal {
+
 template <class NP>
 Background_geometry get_background(const NP& np, Background_geometry def)
 {
-  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::ricci_background_geometry), def);
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::ricci_background_geometry_t_v), def);
 }
 
 // the optional callback: a callable taking const Flow_progress& and returning bool (false cancels) or void
@@ -142,12 +189,227 @@ template <class Callback>
 bool call_progress(const Callback& cb, const Flow_progress& p, std::true_type) { return cb(p); }
 template <class Callback>
 bool call_progress(const Callback& cb, const Flow_progress& p, std::false_type) { cb(p); return true; }
-inline bool call_progress_any(const CGAL::internal_np::Param_not_found&, const Flow_progress&) { return true; }
 template <class Callback>
-bool call_progress_any(const Callback& cb, const Flow_progress& p)
+std::function<bool(const Flow_progress&)> make_progress(const Callback& cb)
 {
-  typedef decltype(cb(p)) R;
-  return call_progress(cb, p, std::integral_constant<bool, std::is_convertible<R, bool>::value>());
+  if constexpr(std::is_same<Callback, CGAL::internal_np::Param_not_found>::value) return {};
+  else {
+    return [cb](const Flow_progress& p) {
+      typedef decltype(cb(p)) R;
+      return call_progress(cb, p, std::integral_constant<bool, std::is_convertible<R, bool>::value>());
+    };
+  }
+}
+
+/// the Newton options from the named parameters. Default accuracy: 1e-11 for the status CONVERGED, then
+/// Newton steps while the error at least halves (the rounding level); an explicit `accuracy` disables that.
+template <class NP>
+Newton_options newton_options(const NP& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  Newton_options o;
+  o.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100);
+  o.accuracy = choose_parameter(get_parameter(np, CGAL::internal_np::accuracy), 1e-11);
+  o.polish = is_default_parameter<NP, CGAL::internal_np::accuracy_t>::value;
+  o.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  o.solver = choose_parameter(get_parameter(np, CGAL::internal_np::ricci_sparse_solver_t_v), Sparse_solver::DEFAULT);
+  o.callback = make_progress(get_parameter(np, CGAL::internal_np::callback));
+  if(!(o.accuracy > 0) || !std::isfinite(o.accuracy)) throw_option_error("accuracy must be positive and finite");
+  if(o.max_iterations < 0) throw_option_error("number_of_iterations must be non-negative");
+  return o;
+}
+
+/// the input's connectivity copied into `m` (vertex i of m = the vertex of index i of tm); vmap[i] = that vertex
+template <class TriangleMesh, class VPM, class VIM, class Mesh>
+void copy_connectivity(const TriangleMesh& tm, VPM vpm, VIM vim, Mesh& m, std::vector<typename Mesh::Vertex_index>& vmap)
+{
+  typedef typename Mesh::Vertex_index V;
+  const std::size_t nv = vertices(tm).size();
+  vmap.assign(nv, V());
+  std::vector<char> used(nv, 0);
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> by_index(nv);
+  for(auto v : vertices(tm)) {
+    const std::size_t i = get(vim, v);
+    if(i >= nv || used[i]) throw_option_error("invalid vertex index map");
+    used[i] = 1; by_index[i] = v;
+  }
+  for(std::size_t i = 0; i < nv; ++i) vmap[i] = m.add_vertex(get(vpm, by_index[i]));
+  std::vector<V> fv;
+  for(auto f : faces(tm)) {
+    fv.clear();
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) fv.push_back(vmap[get(vim, v)]);
+    if(m.add_face(fv) == Mesh::null_face()) throw_mesh_error("the mesh is not an oriented 2-manifold");
+  }
+}
+
+/// the input lengths on the edges of m (from `elm`, or Euclidean from `vpm`) and the tm-edge -> m-edge pairs
+template <class TriangleMesh, class VPM, class VIM, class ELM, class Mesh>
+std::vector<double> input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& elm, const Mesh& m,
+                                  const std::vector<typename Mesh::Vertex_index>& vmap,
+                                  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor,
+                                                        typename Mesh::Edge_index> >& edge_corr)
+{
+  std::vector<double> len(m.number_of_edges(), -1.0);
+  edge_corr.clear();
+  edge_corr.reserve(edges(tm).size());
+  for(auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    const auto mh = m.halfedge(vmap[get(vim, source(h, tm))], vmap[get(vim, target(h, tm))]);
+    if(mh == Mesh::null_halfedge()) throw_mesh_error("inconsistent mesh connectivity");
+    double l;
+    if constexpr(std::is_same<ELM, CGAL::internal_np::Param_not_found>::value)
+      l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+    else
+      l = CGAL::to_double(get(elm, e));
+    if(!(l > 0) || !std::isfinite(l)) throw_metric_error("an edge has zero, negative or non-finite length");
+    len[m.edge(mh)] = l;
+    edge_corr.emplace_back(e, m.edge(mh));
+  }
+  return len;
+}
+
+/// the first face of m that is degenerate for the Euclidean lengths `len` (relative tolerance 1e-12), or
+/// null; `area` receives the total Euclidean area
+template <class Mesh>
+typename Mesh::Face_index degenerate_face(const Mesh& m, const std::vector<double>& len, double& area, std::string& msg)
+{
+  area = 0;
+  typename Mesh::Face_index bad = Mesh::null_face();
+  for(auto f : m.faces()) {
+    const auto h = m.halfedge(f);
+    const double l[3] = {len[m.edge(h)], len[m.edge(m.next(h))], len[m.edge(m.prev(h))]};
+    const double s = 0.5 * (l[0] + l[1] + l[2]);
+    for(int i = 0; i < 3; ++i)
+      if(bad == Mesh::null_face() && !(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3] - 1e-12 * s)) {
+        std::ostringstream os;
+        os << "degenerate face " << std::size_t(f) << " (edge lengths " << l[0] << ", " << l[1] << ", " << l[2] << ")";
+        msg = os.str(); bad = f;
+      }
+    const double a2 = s * (s - l[0]) * (s - l[1]) * (s - l[2]);
+    area += a2 > 0 ? std::sqrt(a2) : 0.0;
+  }
+  return bad;
+}
+
+/// checks the target curvatures against Gauss-Bonnet; returns the area they imply (H^2, S^2)
+inline double check_gauss_bonnet(Background_geometry geo, const std::vector<double>& target, long chi)
+{
+  double sum = 0;
+  for(double k : target) {
+    if(!std::isfinite(k)) throw_input_error("non-finite target curvature");
+    sum += k;
+  }
+  const double two_pi_chi = 2 * CGAL_PI * double(chi);
+  const double tol = 1e-9 * (2 * CGAL_PI + std::abs(two_pi_chi));
+  std::ostringstream os;
+  os.precision(12);
+  os << "target curvatures violate Gauss-Bonnet: sum = " << sum << ", 2 pi chi = " << two_pi_chi << " (chi = " << chi << ")";
+  if(geo == Background_geometry::EUCLIDEAN && std::abs(sum - two_pi_chi) > tol) throw_input_error(os.str() + "; E^2 needs sum = 2 pi chi");
+  if(geo == Background_geometry::HYPERBOLIC && !(sum - two_pi_chi > tol)) throw_input_error(os.str() + "; H^2 needs sum > 2 pi chi");
+  if(geo == Background_geometry::SPHERICAL && !(two_pi_chi - sum > tol)) throw_input_error(os.str() + "; S^2 needs sum < 2 pi chi");
+  return std::abs(sum - two_pi_chi);
+}
+
+/// the record of the metric-preserving (geometric) Delaunay flips of the input, to map lengths back to it
+template <class Point_3>
+struct Initial_flips
+{
+  std::vector<typename CGAL::Surface_mesh<Point_3>::Edge_index> flips;
+  CGAL::Surface_mesh<Point_3> mesh_after;
+  std::vector<double> lambda_after;
+};
+
+/// makes m intrinsically Delaunay for the Euclidean lengths `len` by geometric flips (the PL metric is kept;
+/// degenerate faces disappear); `len` receives the lengths of the flipped triangulation
+template <class Point_3>
+Initial_flips<Point_3> geometric_delaunay_flips(CGAL::Surface_mesh<Point_3>& m, std::vector<double>& len)
+{
+  Initial_flips<Point_3> r;
+  Flow_engine<Point_3> eng(m, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
+  eng.geometric_flips = true;
+  for(auto e : m.edges()) eng.edge_data[e] = 0.5 * len[e];
+  eng.compute_lengths();
+  eng.compute_angles();
+  if(!eng.make_delaunay()) throw_numerical_error("the geometric Delaunay flips of the input did not terminate");
+  for(auto e : m.edges()) len[e] = eng.len[e];
+  r.flips = eng.flip_log;
+  if(!r.flips.empty()) { r.mesh_after = m; r.lambda_after = eng.edge_data; }
+  return r;
+}
+
+/// the initial state of the engine: vertex scaling from the input lengths at a uniform scale, or the radii and
+/// inversive distances of the circle packings from the tangent lengths of the input corners
+template <class Point_3>
+void initial_state(Flow_engine<Point_3>& eng, const std::vector<double>& len, double scale)
+{
+  const auto& m = eng.m;
+  const Background_geometry geo = eng.geo;
+  if(eng.scheme == Scheme::VERTEX_SCALING) {
+    for(auto e : m.edges()) eng.edge_data[e] = 0.5 * len[e];
+    std::fill(eng.u.begin(), eng.u.end(), std::log(scale));
+    return;
+  }
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<double> rsum(nv, 0.0), rcount(nv, 0.0);
+  for(auto f : m.faces()) {
+    const auto h = m.halfedge(f);
+    const typename CGAL::Surface_mesh<Point_3>::Halfedge_index hs[3] = {h, m.next(h), m.prev(h)};
+    for(int i = 0; i < 3; ++i) { // corner at source(hs[i]) between hs[i] and hs[i-1]
+      const double a = len[m.edge(hs[i])], b = len[m.edge(hs[(i + 2) % 3])], c = len[m.edge(hs[(i + 1) % 3])];
+      rsum[m.source(hs[i])] += 0.5 * (a + b - c);
+      rcount[m.source(hs[i])] += 1;
+    }
+  }
+  std::vector<double> r(nv);
+  for(std::size_t i = 0; i < nv; ++i) r[i] = rsum[i] / rcount[i];
+  for(auto e : m.edges()) {
+    const std::size_t a = m.vertex(e, 0), b = m.vertex(e, 1);
+    double I = (len[e] * len[e] - r[a] * r[a] - r[b] * r[b]) / (2 * r[a] * r[b]);
+    if(eng.scheme == Scheme::TANGENTIAL_CIRCLE_PACKING) I = 1;
+    if(eng.scheme == Scheme::THURSTON_CIRCLE_PACKING) I = I < 0 ? 0 : (I > 1 ? 1 : I);
+    eng.edge_data[e] = I;
+  }
+  for(std::size_t i = 0; i < nv; ++i) eng.u[i] = u_from_radius(geo, scale * r[i]);
+}
+
+/// the lengths of the input connectivity under the final conformal factors, written to the user's map;
+/// returns whether they satisfy every triangle inequality of the input faces
+template <class TriangleMesh, class VIM, class OutMap, class Point_3, class EdgeCorr>
+bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow_engine<Point_3>& eng,
+                         const std::vector<double>& input_len, const Initial_flips<Point_3>& init,
+                         const EdgeCorr& edge_corr)
+{
+  const auto& m = eng.m;
+  // Penner coordinates (at u = 0) of the input connectivity: the input half-lengths, or, after geometric initial
+  // flips, the Ptolemy images of the Delaunay triangulation's half-lengths flipped back in reverse order
+  std::vector<double> penner0(m.number_of_edges());
+  for(const auto& ec : edge_corr) penner0[ec.second] = 0.5 * input_len[ec.second];
+  if(!init.flips.empty()) {
+    CGAL::Surface_mesh<Point_3> copy = init.mesh_after;
+    Flow_engine<Point_3> back(copy, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
+    back.edge_data = init.lambda_after;
+    back.compute_lengths();
+    back.compute_angles();
+    for(auto it = init.flips.rbegin(); it != init.flips.rend(); ++it) back.flip(*it);
+    for(const auto& ec : edge_corr) penner0[ec.second] = back.edge_data[ec.second];
+  }
+  for(const auto& ec : edge_corr) {
+    const auto h = halfedge(ec.first, tm);
+    const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
+    const double l = eng.scheme == Scheme::VERTEX_SCALING
+                       ? length_from_lambda(eng.geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0[ec.second])
+                       : eng.len[ec.second]; // no flips for the circle packings: same connectivity
+    put(out, ec.first, l);
+  }
+  if(eng.flips == 0 && init.flips.empty()) return true;
+  for(auto f : faces(tm)) {
+    double l[3] = {0, 0, 0}; int i = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { if(i >= 3) break; l[i++] = CGAL::to_double(get(out, edge(h, tm))); }
+    for(int k = 0; k < 3; ++k) if(!(l[k] < l[(k + 1) % 3] + l[(k + 2) % 3])) return false;
+  }
+  return true;
 }
 
 } // namespace internal
@@ -171,20 +433,26 @@ bool call_progress_any(const Callback& cb, const Flow_progress& p)
       `input_edge_length_map(m)` (default: Euclidean lengths from `vertex_point_map`),
     - `CGAL::parameters::vertex_point_map`, `vertex_index_map`,
     - `number_of_iterations(n)`: maximum number of Newton iterations (default 100),
-    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians, default 1e-11),
+    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians). Default: the status is CONVERGED once
+      the error is below 1e-11, and Newton then continues while each step at least halves the error (at
+      most 4 more steps): the flow ends at the rounding level of double arithmetic (about 1e-14 on the demo
+      meshes), which the embedding's relator needs. With an explicit accuracy the flow stops at it.
     - `do_flip(b)`: keep the triangulation intrinsically Delaunay with Ptolemy flips (default true; vertex
       scaling only),
     - `geometric_initial_flips(b)`: first make the input intrinsically Delaunay by metric-preserving flips
-      (default false; see `parameters::geometric_initial_flips()`),
+      (default false; see `parameters::geometric_initial_flips()`; automatic when the input has a degenerate,
+      zero-area face: such faces are removed by these flips without changing the metric),
+    - `sparse_solver(s)`: see `Sparse_solver` (default CHOLMOD when available),
     - `verbose(b)`: one line per iteration on `std::cerr`,
     - `callback(f)`: `f(const Flow_progress&)` after each iteration; return `false` to stop (status CANCELLED).
   \returns the result (status, statistics, intrinsic triangulation, conformal factors).
-  \throws Ricci_flow_error on invalid input (see `Ricci_flow_error`). Non-convergence is not an exception:
-          the status says it, the metric is the last accepted iterate (finite lengths).
+  \throws CGAL::Invalid_mesh_error, CGAL::Invalid_metric_error, CGAL::Invalid_option_error,
+          CGAL::Invalid_input_error on invalid input (see `Ricci_flow_error`). Non-convergence is not an
+          exception: the status says it, the metric is the last accepted iterate (finite lengths).
 
-  Cost per iteration: one sparse Cholesky (`Eigen::SimplicialLDLT`) factorization of the n x n Hessian, whose
-  symbolic analysis is reused until flips change the sparsity pattern; O(F) for the rest. On the test meshes
-  3 to 8 iterations.
+  Cost per iteration: one sparse Cholesky factorization of the n x n Hessian (CHOLMOD supernodal or Eigen's
+  `SimplicialLDLT`), whose symbolic analysis is reused until flips change the sparsity pattern; O(F) for the
+  rest. On the demo meshes 3 to 10 iterations.
 */
 template <class TriangleMesh, class VertexTargetMap, class EdgeLengthOutMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -199,323 +467,65 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   typedef typename boost::property_traits<VPM>::value_type Point_3;
   typedef Discrete_metric<Point_3> Result;
   typedef typename Result::Mesh Mesh;
-  typedef typename Mesh::Vertex_index V;
-  typedef typename Mesh::Halfedge_index H;
-  typedef typename Mesh::Edge_index E;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor tm_vertex;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor tm_face;
-  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor tm_edge;
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor tm_halfedge;
 
   const auto t_start = std::chrono::steady_clock::now();
-  internal::check_triangle_mesh(tm);
-
-  const Background_geometry geo = internal::get_background(np, Background_geometry::HYPERBOLIC);
-  const Scheme scheme = choose_parameter(get_parameter(np, internal_np::ricci_scheme), Scheme::VERTEX_SCALING);
-  const int max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 100);
-  const double accuracy = choose_parameter(get_parameter(np, internal_np::accuracy), 1e-11);
-  const bool do_flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
-  const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
-  const auto callback = get_parameter(np, internal_np::callback);
   VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  if(!(accuracy > 0)) throw Ricci_flow_error("accuracy must be positive");
-  if(max_iterations < 0) throw Ricci_flow_error("number_of_iterations must be non-negative");
+  const internal::Mesh_topology topo = internal::check_triangle_mesh(tm, vim);
+  const Background_geometry geo = internal::get_background(np, Background_geometry::HYPERBOLIC);
+  const Scheme scheme = choose_parameter(get_parameter(np, CGAL::internal_np::ricci_scheme_t_v), Scheme::VERTEX_SCALING);
+  const bool do_flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
+  const internal::Newton_options options = internal::newton_options(np);
 
-  // ---- copy the connectivity into the intrinsic triangulation
   Result res;
-  Mesh& m = res.mesh_;
-  const std::size_t nv = vertices(tm).size();
-  std::vector<V> vmap(nv);
-  for(tm_vertex v : vertices(tm)) {
-    const std::size_t i = get(vim, v);
-    if(i >= nv) throw Ricci_flow_error("invalid vertex index map");
-    vmap[i] = m.add_vertex(get(vpm, v));
-  }
-  for(tm_face f : faces(tm)) {
-    std::vector<V> fv;
-    for(tm_vertex v : CGAL::vertices_around_face(halfedge(f, tm), tm)) fv.push_back(vmap[get(vim, v)]);
-    if(m.add_face(fv) == Mesh::null_face()) throw Ricci_flow_error("the mesh is not an oriented 2-manifold");
-  }
-  // input lengths (on the intrinsic mesh's edges) and the user-edge -> mesh-edge correspondence
-  std::vector<double> input_len(m.number_of_edges(), -1.0);
-  std::vector<std::pair<tm_edge, E> > edge_corr;
-  edge_corr.reserve(edges(tm).size());
-  const auto elm = get_parameter(np, internal_np::ricci_edge_length_map);
-  for(tm_edge e : edges(tm)) {
-    const tm_halfedge h = halfedge(e, tm);
-    const V a = vmap[get(vim, source(h, tm))], b = vmap[get(vim, target(h, tm))];
-    const H mh = m.halfedge(a, b);
-    if(mh == Mesh::null_halfedge()) throw Ricci_flow_error("inconsistent mesh connectivity");
-    double l;
-    if constexpr(std::is_same<typename std::decay<decltype(elm)>::type, CGAL::internal_np::Param_not_found>::value)
-      l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
-    else
-      l = CGAL::to_double(get(elm, e));
-    if(!(l > 0) || !std::isfinite(l)) throw Ricci_flow_error("an edge has zero, negative or non-finite length");
-    input_len[m.edge(mh)] = l;
-    edge_corr.emplace_back(e, m.edge(mh));
-  }
-  // degenerate faces
+  Mesh& m = internal::Metric_access::mesh(res);
+  std::vector<typename Mesh::Vertex_index> vmap;
+  internal::copy_connectivity(tm, vpm, vim, m, vmap);
+  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor, typename Mesh::Edge_index> > edge_corr;
+  std::vector<double> input_len =
+    internal::input_lengths(tm, vpm, vim, get_parameter(np, CGAL::internal_np::ricci_edge_length_map_t_v), m, vmap, edge_corr);
+  std::vector<double> target_k(vmap.size());
+  for(auto v : vertices(tm)) target_k[get(vim, v)] = CGAL::to_double(get(target_curvature, v));
+  const double target_area = internal::check_gauss_bonnet(geo, target_k, topo.euler_characteristic);
+
+  // a degenerate (zero-area) face: the geometric Delaunay flips of the input remove it without changing the
+  // metric (vertex scaling only)
   double input_area = 0;
-  for(auto f : m.faces()) {
-    const H h = m.halfedge(f);
-    const double l[3] = {input_len[m.edge(h)], input_len[m.edge(m.next(h))], input_len[m.edge(m.prev(h))]};
-    const double s = 0.5 * (l[0] + l[1] + l[2]);
-    for(int i = 0; i < 3; ++i)
-      if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3] - 1e-12 * s)) {
-        std::ostringstream os;
-        os << "degenerate face " << std::size_t(f) << " (edge lengths " << l[0] << ", " << l[1] << ", " << l[2] << ")";
-        throw Ricci_flow_error(os.str());
-      }
-    input_area += std::sqrt(s * (s - l[0]) * (s - l[1]) * (s - l[2]));
+  std::string degenerate_msg;
+  const bool degenerate = internal::degenerate_face(m, input_len, input_area, degenerate_msg) != Mesh::null_face();
+  if(degenerate && scheme != Scheme::VERTEX_SCALING)
+    internal::throw_metric_error(degenerate_msg + "; only the vertex-scaling scheme can flip it away");
+  internal::Initial_flips<Point_3> init;
+  if(scheme == Scheme::VERTEX_SCALING &&
+     (degenerate || choose_parameter(get_parameter(np, CGAL::internal_np::ricci_geometric_initial_flips_t_v), false))) {
+    init = internal::geometric_delaunay_flips(m, input_len);
+    internal::Metric_access::statistics(res).number_of_initial_flips = init.flips.size();
+    if(internal::degenerate_face(m, input_len, input_area, degenerate_msg) != Mesh::null_face())
+      internal::throw_metric_error(degenerate_msg + " after the intrinsic Delaunay flips of the input");
   }
 
-  // ---- topology and Gauss-Bonnet
-  const internal::Mesh_topology topo = internal::mesh_topology(m);
-  if(topo.components != 1)
-    throw Ricci_flow_error("the mesh has " + std::to_string(topo.components) + " connected components (need 1)");
-  res.genus_ = topo.genus;
-  std::vector<double> target_k(nv);
-  double target_sum = 0;
-  for(tm_vertex v : vertices(tm)) {
-    const double k = CGAL::to_double(get(target_curvature, v));
-    if(!std::isfinite(k)) throw Ricci_flow_error("non-finite target curvature");
-    target_k[std::size_t(vmap[get(vim, v)])] = k;
-    target_sum += k;
-  }
-  const double two_pi_chi = 2 * CGAL_PI * double(topo.euler_characteristic);
-  const double gb_tol = 1e-9 * (2 * CGAL_PI + std::abs(two_pi_chi));
-  double target_area = 0; // area of the result implied by Gauss-Bonnet (H^2, S^2)
-  {
-    std::ostringstream os;
-    os.precision(12);
-    os << "target curvatures violate Gauss-Bonnet: sum = " << target_sum << ", 2 pi chi = " << two_pi_chi
-       << " (chi = " << topo.euler_characteristic << ")";
-    if(geo == Background_geometry::EUCLIDEAN && std::abs(target_sum - two_pi_chi) > gb_tol)
-      throw Ricci_flow_error(os.str() + "; E^2 needs sum = 2 pi chi");
-    if(geo == Background_geometry::HYPERBOLIC && !(target_sum - two_pi_chi > gb_tol))
-      throw Ricci_flow_error(os.str() + "; H^2 needs sum > 2 pi chi");
-    if(geo == Background_geometry::SPHERICAL && !(two_pi_chi - target_sum > gb_tol))
-      throw Ricci_flow_error(os.str() + "; S^2 needs sum < 2 pi chi");
-    target_area = std::abs(target_sum - two_pi_chi);
-  }
-
-  // ---- optional: make the input intrinsically Delaunay by geometric flips (its PL metric is unchanged)
-  const bool geometric_initial =
-    choose_parameter(get_parameter(np, internal_np::ricci_geometric_initial_flips), false) && scheme == Scheme::VERTEX_SCALING;
-  std::vector<E> initial_flips;
-  Mesh mesh_after_initial_flips;
-  std::vector<double> lambda_after_initial_flips;
-  if(geometric_initial) {
-    internal::Flow_engine<Point_3> eng0(m, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
-    eng0.geometric_flips = true;
-    for(E e : m.edges()) eng0.edge_data[e] = 0.5 * input_len[e];
-    eng0.compute_lengths();
-    eng0.compute_angles();
-    if(!eng0.make_delaunay()) throw Ricci_flow_error("the geometric Delaunay flips of the input did not terminate");
-    for(E e : m.edges()) input_len[e] = eng0.len[e];
-    initial_flips = eng0.flip_log;
-    res.stats_.number_of_initial_flips = initial_flips.size();
-    if(!initial_flips.empty()) { mesh_after_initial_flips = m; lambda_after_initial_flips = eng0.edge_data; }
-  }
-
-  // ---- initial state: a uniform scale making the triangles' total area about the target area
+  // initial state: a uniform scale making the triangles' total area about the target area, then Newton
   internal::Flow_engine<Point_3> eng(m, geo, scheme, do_flip);
   eng.target = target_k;
-  const double scale = geo == Background_geometry::EUCLIDEAN ? 1.0 : std::sqrt(target_area / input_area);
-  if(scheme == Scheme::VERTEX_SCALING) {
-    for(E e : m.edges()) eng.edge_data[e] = 0.5 * input_len[e];
-    std::fill(eng.u.begin(), eng.u.end(), std::log(scale));
-  } else {
-    // radii: mean tangent length (l_ij + l_ik - l_jk) / 2 of the incident corners
-    std::vector<double> rsum(nv, 0.0), rcount(nv, 0.0);
-    for(auto f : m.faces()) {
-      const H h = m.halfedge(f);
-      const H hs[3] = {h, m.next(h), m.prev(h)};
-      for(int i = 0; i < 3; ++i) { // corner at source(hs[i]) between hs[i] and hs[i-1]
-        const double a = input_len[m.edge(hs[i])], b = input_len[m.edge(hs[(i + 2) % 3])],
-                     c = input_len[m.edge(hs[(i + 1) % 3])];
-        rsum[m.source(hs[i])] += 0.5 * (a + b - c);
-        rcount[m.source(hs[i])] += 1;
-      }
-    }
-    std::vector<double> r(nv);
-    for(std::size_t i = 0; i < nv; ++i) r[i] = rsum[i] / rcount[i];
-    for(E e : m.edges()) {
-      const std::size_t a = m.vertex(e, 0), b = m.vertex(e, 1);
-      const double l = input_len[e];
-      double I = (l * l - r[a] * r[a] - r[b] * r[b]) / (2 * r[a] * r[b]);
-      if(scheme == Scheme::TANGENTIAL_CIRCLE_PACKING) I = 1;
-      if(scheme == Scheme::THURSTON_CIRCLE_PACKING) I = I < 0 ? 0 : (I > 1 ? 1 : I);
-      eng.edge_data[e] = I;
-    }
-    for(std::size_t i = 0; i < nv; ++i) eng.u[i] = internal::u_from_radius(geo, scale * r[i]);
+  internal::initial_state(eng, input_len, geo == Background_geometry::EUCLIDEAN ? 1.0 : std::sqrt(target_area / input_area));
+  internal::Newton_options o = options;
+  if(geo == Background_geometry::EUCLIDEAN) { // u is defined up to a constant: pin u_0
+    o.fixed.assign(vmap.size(), 0); o.fixed[0] = 1; o.fixed_in_error = true;
   }
+  Flow_statistics& st = internal::Metric_access::statistics(res);
+  internal::Newton_solver<Point_3>(eng, o, st).run();
 
-  // ---- Newton's method with line search (thesis Algorithm 1)
-  Flow_statistics& st = res.stats_;
-  const int n = int(nv);
-  const bool gauge = geo == Background_geometry::EUCLIDEAN; // E^2: u is defined up to a constant: pin u_0
-  std::vector<double> g(nv);
-  auto evaluate = [&](double& max_err) -> bool {
-    eng.compute_lengths();
-    eng.compute_angles();
-    if(!eng.make_delaunay()) return false;
-    eng.compute_curvature();
-    max_err = 0;
-    for(std::size_t i = 0; i < nv; ++i) {
-      g[i] = eng.K[i] - eng.target[i];
-      if(!std::isfinite(g[i])) { max_err = std::numeric_limits<double>::infinity(); return true; }
-      max_err = (std::max)(max_err, std::abs(g[i]));
-    }
-    return true;
-  };
-  double err = 0;
-  if(!evaluate(err)) st.status = Flow_status::FLIP_LIMIT_REACHED;
-  else if(!std::isfinite(err)) st.status = Flow_status::NUMERICAL_FAILURE;
-  else st.status = Flow_status::MAXIMUM_ITERATIONS;
-  st.error_history.push_back(err);
-  st.energy_history.push_back(0.0);
-  double energy = 0;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > solver;
-  int analyzed_version = -1;
-  std::vector<Eigen::Triplet<double> > trip;
-  Eigen::SparseMatrix<double> Hm(n, n);
-  Eigen::VectorXd rhs(n), delta(n);
-  std::vector<double> u_old, g_old;
-  double best_err = err;
-  int iterations_without_progress = 0;
-  while(st.status == Flow_status::MAXIMUM_ITERATIONS) {
-    if(err < accuracy) { st.status = Flow_status::CONVERGED; break; }
-    if(st.iterations >= max_iterations) break;
-    if(iterations_without_progress >= 5) { st.status = Flow_status::STAGNATED; break; }
-    // Hessian dK/du
-    eng.hessian_triplets(trip);
-    if(gauge) {
-      trip.erase(std::remove_if(trip.begin(), trip.end(),
-                                [](const Eigen::Triplet<double>& t) { return t.row() == 0 || t.col() == 0; }),
-                 trip.end());
-      trip.emplace_back(0, 0, 1.0);
-    }
-    Hm.setFromTriplets(trip.begin(), trip.end());
-    const auto tf0 = std::chrono::steady_clock::now();
-    if(analyzed_version != eng.pattern_version) {
-      solver.analyzePattern(Hm);
-      analyzed_version = eng.pattern_version;
-      ++st.number_of_symbolic_factorizations;
-    }
-    solver.factorize(Hm);
-    ++st.number_of_factorizations;
-    if(solver.info() != Eigen::Success) {
-      st.factorization_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tf0).count();
-      st.status = Flow_status::NUMERICAL_FAILURE; break;
-    }
-    for(int i = 0; i < n; ++i) rhs[i] = -g[i];
-    if(gauge) rhs[0] = 0;
-    delta = solver.solve(rhs);
-    st.factorization_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tf0).count();
-    if(!delta.allFinite()) { st.status = Flow_status::NUMERICAL_FAILURE; break; }
-    double slope0 = 0;
-    for(int i = 0; i < n; ++i) slope0 += g[i] * delta[i];
-    // line search: accept t when the energy decreases (trapezoidal estimate from the directional derivatives;
-    // the energy is convex for E^2 / H^2) or the max error decreases
-    u_old = eng.u; g_old = g;
-    const double err_old = err;
-    double t = 1.0;
-    bool accepted = false;
-    while(t > 1e-12) {
-      for(int i = 0; i < n; ++i) eng.u[i] = u_old[i] + t * delta[i];
-      double e2 = 0;
-      if(!evaluate(e2)) { st.status = Flow_status::FLIP_LIMIT_REACHED; break; }
-      if(std::isfinite(e2)) {
-        double slope_t = 0;
-        for(int i = 0; i < n; ++i) slope_t += g[i] * delta[i];
-        const double de = 0.5 * t * (slope0 + slope_t);
-        if((slope0 < 0 && de <= 1e-4 * t * slope0) || e2 < err_old * (1 - 1e-4 * t)) {
-          accepted = true; err = e2; energy += de; break;
-        }
-      }
-      t *= 0.5;
-    }
-    if(st.status == Flow_status::FLIP_LIMIT_REACHED) {
-      eng.u = u_old; eng.compute_lengths(); eng.compute_angles(); eng.compute_curvature(); g = g_old; err = err_old;
-      break;
-    }
-    if(!accepted) {
-      eng.u = u_old; double e2 = 0; evaluate(e2); err = e2;
-      st.status = Flow_status::LINE_SEARCH_FAILED; break;
-    }
-    ++st.iterations;
-    // stagnation is only declared in the rounding regime (far from the solution Newton may need several
-    // iterations before the max error drops)
-    if(err < 0.5 * best_err) { best_err = err; iterations_without_progress = 0; }
-    else if(best_err < 1e-6) ++iterations_without_progress;
-    st.error_history.push_back(err);
-    st.energy_history.push_back(energy);
-    Flow_progress pr; pr.iteration = st.iterations; pr.max_curvature_error = err; pr.step_length = t;
-    pr.number_of_flips = eng.flips;
-    if(verbose)
-      std::cerr << "Ricci flow: iteration " << st.iterations << "  max |K - target| = " << err
-                << "  step = " << t << "  flips = " << eng.flips << std::endl;
-    if(!internal::call_progress_any(callback, pr)) {
-      st.status = err < accuracy ? Flow_status::CONVERGED : Flow_status::CANCELLED; break;
-    }
-  }
-  st.max_curvature_error = err;
-  st.number_of_flips = eng.flips;
-
-  // ---- results
-  res.geo_ = geo;
-  res.u_ = eng.u;
-  res.target_ = target_k;
-  res.lengths_ = m.template add_property_map<E, double>("e:length", 0.0).first;
-  for(E e : m.edges()) {
+  auto& lengths = internal::Metric_access::add_lengths(res);
+  for(auto e : m.edges()) {
     // only a non-finite initial state can get here (steps with non-finite values are never accepted)
     if(!std::isfinite(eng.len[e]))
-      throw Ricci_flow_error("numerical failure: the initial state of the scheme has non-finite edge lengths");
-    res.lengths_[e] = eng.len[e];
+      internal::throw_numerical_error("the initial state of the scheme has non-finite edge lengths");
+    lengths[e] = eng.len[e];
   }
-  // the user's mesh: lengths of the input connectivity under the final conformal factors
-  res.input_valid_ = true;
-  // Penner coordinates (at u = 0) of the input connectivity: the input half-lengths, or, after geometric initial
-  // flips, the Ptolemy images of the Delaunay triangulation's half-lengths flipped back in reverse order
-  std::vector<double> penner0(m.number_of_edges());
-  for(const auto& ec : edge_corr) penner0[ec.second] = 0.5 * input_len[ec.second];
-  if(!initial_flips.empty()) {
-    internal::Flow_engine<Point_3> back(mesh_after_initial_flips, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
-    back.edge_data = lambda_after_initial_flips;
-    back.compute_lengths();
-    back.compute_angles();
-    for(auto it = initial_flips.rbegin(); it != initial_flips.rend(); ++it) back.flip(*it);
-    for(const auto& ec : edge_corr) penner0[ec.second] = back.edge_data[ec.second];
-  }
-  {
-    for(const auto& ec : edge_corr) {
-      const tm_halfedge h = halfedge(ec.first, tm);
-      const std::size_t a = std::size_t(vmap[get(vim, source(h, tm))]), b = std::size_t(vmap[get(vim, target(h, tm))]);
-      double l;
-      if(scheme == Scheme::VERTEX_SCALING)
-        l = internal::length_from_lambda(geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0[ec.second]);
-      else
-        l = eng.len[ec.second]; // no flips for the circle packings: same connectivity
-      put(edge_length_out, ec.first, l);
-    }
-    if(eng.flips > 0 || !initial_flips.empty()) {
-      // check the triangle inequalities of the input faces with the written lengths
-      for(tm_face f : faces(tm)) {
-        double l[3] = {0, 0, 0}; int i = 0;
-        for(tm_halfedge h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-          if(i >= 3) break;
-          l[i++] = CGAL::to_double(get(edge_length_out, edge(h, tm)));
-        }
-        for(int k = 0; k < 3; ++k)
-          if(!(l[k] < l[(k + 1) % 3] + l[(k + 2) % 3])) res.input_valid_ = false;
-      }
-    }
-  }
+  const bool valid = internal::write_input_lengths(tm, vim, edge_length_out, eng, input_len, init, edge_corr);
+  internal::Metric_access::set(res, geo, eng.u, target_k, topo.genus, valid);
   st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-  if(verbose)
+  if(options.verbose)
     std::cerr << "Ricci flow: " << to_string(st.status) << " after " << st.iterations << " iterations, max error "
               << st.max_curvature_error << ", " << st.number_of_flips << " flips, " << st.time_seconds << " s" << std::endl;
   return res;
@@ -527,19 +537,15 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   at every vertex, background H^2) discretely conformal (vertex scaling, with Ptolemy flips) to the input.
   Its total area is 4 pi (g - 1). Named parameters as `compute_metric()`; the edge lengths of the input
   connectivity are not written (use `compute_metric()` for that).
-  \throws Ricci_flow_error if the mesh is open, has several components, genus < 2, or is otherwise invalid.
+  \throws CGAL::Invalid_mesh_error if the mesh has several components (checked first), is open, not
+          triangulated, of genus < 2 or otherwise invalid.
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto hyperbolic_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::check_triangle_mesh(tm);
-  if(!CGAL::is_closed(tm)) throw Ricci_flow_error("hyperbolic uniformization needs a closed surface");
-  const long chi = long(vertices(tm).size()) - long(edges(tm).size()) + long(faces(tm).size());
-  if(chi >= 0 && chi % 2 == 0 && (2 - chi) / 2 < 2)
-    throw Ricci_flow_error("hyperbolic uniformization needs genus >= 2 (this surface has genus " +
-                           std::to_string((2 - chi) / 2) + ")");
+  internal::check_closed_surface(tm, "hyperbolic uniformization", "genus >= 2", [](long g) { return g >= 2; });
   if(internal::get_background(np, Background_geometry::HYPERBOLIC) != Background_geometry::HYPERBOLIC)
-    throw Ricci_flow_error("hyperbolic uniformization uses the hyperbolic background");
+    internal::throw_option_error("hyperbolic uniformization uses the hyperbolic background");
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor tm_edge;
   return compute_metric(tm, CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>(0.0),
                         CGAL::Constant_property_map<tm_edge, double>(0.0),
@@ -549,22 +555,19 @@ auto hyperbolic_uniformization(const TriangleMesh& tm, const NamedParameters& np
 /*!
   \ingroup PkgDiscreteRicciFlowRef
   The flat metric (K_i = 0, background E^2) of a closed surface of genus 1, discretely conformal to the input.
-  \throws Ricci_flow_error unless the mesh is a closed torus.
+  \throws CGAL::Invalid_mesh_error unless the mesh is a closed connected torus (components checked first).
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto flat_metric(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::check_triangle_mesh(tm);
-  if(!CGAL::is_closed(tm)) throw Ricci_flow_error("the flat torus metric needs a closed surface");
-  const long chi = long(vertices(tm).size()) - long(edges(tm).size()) + long(faces(tm).size());
-  if(chi != 0) throw Ricci_flow_error("the flat torus metric needs genus 1 (Euler characteristic " + std::to_string(chi) + ")");
+  internal::check_closed_surface(tm, "the flat torus metric", "genus 1", [](long g) { return g == 1; });
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor tm_edge;
   return compute_metric(tm, CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>(0.0),
                         CGAL::Constant_property_map<tm_edge, double>(0.0),
                         parameters::background_geometry(Background_geometry::EUCLIDEAN, np));
 }
 
-} // namespace Ricci_flow
+} // namespace Discrete_Ricci_flow
 } // namespace CGAL
 
 #endif // CGAL_DISCRETE_RICCI_FLOW_COMPUTE_METRIC_H

@@ -6,6 +6,8 @@
 #ifndef CGAL_DISCRETE_RICCI_FLOW_FLOW_TYPES_H
 #define CGAL_DISCRETE_RICCI_FLOW_FLOW_TYPES_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
+#include <CGAL/Hyperbolic_geometry_named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_type_config.h>
 
@@ -14,16 +16,16 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace internal_np {
 // package-specific named-parameter tags (looked up with parameters::get_parameter like CGAL's own)
-enum ricci_background_geometry_t { ricci_background_geometry };
-enum ricci_scheme_t { ricci_scheme };
-enum ricci_edge_length_map_t { ricci_edge_length_map };
-enum ricci_geometric_initial_flips_t { ricci_geometric_initial_flips };
-} // namespace internal_np
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_background_geometry_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_scheme_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_edge_length_map_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_geometric_initial_flips_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_sparse_solver_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_puncture_vertex_t)
 
-namespace Ricci_flow {
+namespace CGAL {
+namespace Discrete_Ricci_flow {
 
 /// \ingroup PkgDiscreteRicciFlowRef
 /// The constant-curvature geometry of the triangles: E^2 (K = 0), H^2 (K = -1), S^2 (K = +1).
@@ -50,6 +52,8 @@ enum class Flow_status {
   NUMERICAL_FAILURE,       ///< the Hessian could not be factorized or a non-finite value appeared
   FLIP_LIMIT_REACHED,      ///< the Delaunay flip loop exceeded its budget
   CANCELLED,               ///< the progress callback asked to stop
+  DEGENERATE_TRIANGLES,    ///< the curvatures are reached only with degenerate triangles (Luo's extension
+                           ///< of the angles): not a metric; Ptolemy flips (`do_flip(true)`) avoid it
   STAGNATED                ///< below 1e-6, five iterations without halving the error: the rounding floor of
                            ///< double arithmetic is above the requested accuracy (the error reached is reported)
 };
@@ -63,19 +67,55 @@ inline const char* to_string(Flow_status s)
     case Flow_status::NUMERICAL_FAILURE: return "numerical failure";
     case Flow_status::FLIP_LIMIT_REACHED: return "flip limit reached";
     case Flow_status::CANCELLED: return "cancelled";
+    case Flow_status::DEGENERATE_TRIANGLES: return "degenerate triangles at the solution (flips needed)";
     default: return "stagnated (rounding floor above the requested accuracy)";
   }
 }
 
+/*!
+  \ingroup PkgDiscreteRicciFlowRef
+  The errors of the package are the shared ones of `CGAL/Hyperbolic_geometry_errors.h`:
+  - `CGAL::Invalid_mesh_error`: empty, open where a closed surface is needed, several connected components
+    (checked first), not triangulated (quad meshes: triangulate with
+    `CGAL::Polygon_mesh_processing::triangulate_faces()`), non-manifold, wrong genus for the entry point;
+  - `CGAL::Invalid_metric_error`: input edge lengths that are not positive and finite, or faces that stay
+    degenerate after the intrinsic Delaunay flips of the input;
+  - `CGAL::Invalid_option_error`: a named parameter out of its range (accuracy, number of iterations, an
+    invalid vertex index map or puncture vertex, a scheme that the entry point does not support);
+  - `CGAL::Invalid_input_error`: target curvatures that violate Gauss-Bonnet or are not finite;
+  - `CGAL::Numerical_error`: a computation that could not be carried out in double precision (e.g. the
+    Moebius normalization of the spherical map did not converge).
+  `Ricci_flow_error` is kept as the name of their common base for input problems: it *is*
+  `CGAL::Invalid_input_error`, so `catch(const Ricci_flow_error&)` catches every input error of the package.
+  Non-convergence of the flow is not an exception but a `Flow_status`.
+*/
+typedef CGAL::Invalid_input_error Ricci_flow_error;
+
+namespace internal {
+inline std::string message(const std::string& what) { return "CGAL::Discrete_Ricci_flow: " + what; }
+[[noreturn]] inline void throw_mesh_error(const std::string& what) { throw CGAL::Invalid_mesh_error(message(what)); }
+[[noreturn]] inline void throw_metric_error(const std::string& what) { throw CGAL::Invalid_metric_error(message(what)); }
+[[noreturn]] inline void throw_option_error(const std::string& what) { throw CGAL::Invalid_option_error(message(what)); }
+[[noreturn]] inline void throw_input_error(const std::string& what) { throw CGAL::Invalid_input_error(message(what)); }
+[[noreturn]] inline void throw_numerical_error(const std::string& what) { throw CGAL::Numerical_error(message(what)); }
+} // namespace internal
+
 /// \ingroup PkgDiscreteRicciFlowRef
-/// Thrown for input that the flow cannot handle: not a triangle mesh, non-manifold, open where a closed surface
-/// is needed, several connected components, degenerate faces, wrong genus for the requested background, target
-/// curvatures violating Gauss-Bonnet, inconsistent options.
-class Ricci_flow_error : public std::runtime_error
+/// The sparse Cholesky factorization of the Newton systems. `DEFAULT` is CHOLMOD's supernodal Cholesky when
+/// the library was configured with SuiteSparse (macro `CGAL_HC_HAS_CHOLMOD`), else Eigen's `SimplicialLDLT`.
+/// An indefinite Hessian (spherical background) falls back to `SimplicialLDLT` for that iteration.
+enum class Sparse_solver { DEFAULT, SUPERNODAL_CHOLMOD, SIMPLICIAL_LDLT };
+
+/// \ingroup PkgDiscreteRicciFlowRef
+/// true if CHOLMOD is available (the library was configured with SuiteSparse)
+inline constexpr bool has_cholmod()
 {
-public:
-  explicit Ricci_flow_error(const std::string& what) : std::runtime_error("CGAL::Ricci_flow: " + what) {}
-};
+#ifdef CGAL_HC_HAS_CHOLMOD
+  return true;
+#else
+  return false;
+#endif
+}
 
 /// \ingroup PkgDiscreteRicciFlowRef
 /// What the progress callback receives after each Newton iteration.
@@ -103,45 +143,47 @@ struct Flow_statistics
   std::size_t number_of_initial_flips = 0;   ///< geometric flips of the input (`geometric_initial_flips`)
   std::size_t number_of_symbolic_factorizations = 0; ///< Eigen analyzePattern calls (pattern changes)
   std::size_t number_of_factorizations = 0;  ///< Eigen numeric factorizations (one per Newton iteration)
-  double factorization_seconds = 0;          ///< time spent in analyzePattern + factorize
+  double factorization_seconds = 0;          ///< time spent in analyzePattern + factorize + solve
+  double first_factorization_seconds = 0;    ///< time of the first analyzePattern + factorize + solve
+  Sparse_solver solver_used = Sparse_solver::SIMPLICIAL_LDLT; ///< the solver of the last Newton system
+  std::size_t number_of_solver_fallbacks = 0; ///< iterations that fell back to SimplicialLDLT (indefinite)
+  /// Newton steps taken after the requested accuracy was reached (default accuracy: until the error stops
+  /// halving, see `compute_metric()`)
+  int polishing_iterations = 0;
   bool converged() const { return status == Flow_status::CONVERGED; }
 };
 
 namespace parameters {
 
-#define CGAL_RICCI_FLOW_NAMED_PARAMETER(NAME, TAG)                                                   \
-  template <class T>                                                                                  \
-  CGAL::Named_function_parameters<T, CGAL::internal_np::TAG> NAME(const T& v)                         \
-  { return CGAL::Named_function_parameters<T, CGAL::internal_np::TAG>(v); }                           \
-  template <class T, class T2, class Tag2, class Base2>                                               \
-  CGAL::Named_function_parameters<T, CGAL::internal_np::TAG, CGAL::Named_function_parameters<T2, Tag2, Base2> > \
-  NAME(const T& v, const CGAL::Named_function_parameters<T2, Tag2, Base2>& base)                      \
-  { return CGAL::Named_function_parameters<T, CGAL::internal_np::TAG,                                 \
-                                           CGAL::Named_function_parameters<T2, Tag2, Base2> >(v, base); }
-
 /// named parameter `background_geometry(Background_geometry g [, np])`: the background geometry (default
 /// depends on the entry point). The optional second argument chains other named parameters, e.g.
 /// `background_geometry(Background_geometry::EUCLIDEAN, CGAL::parameters::number_of_iterations(50))`;
 /// CGAL's own parameters chain as members: `scheme(s).number_of_iterations(50).verbose(true)`.
-CGAL_RICCI_FLOW_NAMED_PARAMETER(background_geometry, ricci_background_geometry_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(background_geometry, ricci_background_geometry_t)
 /// named parameter `scheme(Scheme s [, np])` (default `Scheme::VERTEX_SCALING`)
-CGAL_RICCI_FLOW_NAMED_PARAMETER(scheme, ricci_scheme_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(scheme, ricci_scheme_t)
 /// named parameter `input_edge_length_map(map [, np])`: a readable edge property map with the input edge
 /// lengths (default: Euclidean lengths from the vertex point map). Starts the flow from an intrinsic metric.
-CGAL_RICCI_FLOW_NAMED_PARAMETER(input_edge_length_map, ricci_edge_length_map_t)
-
+CGAL_HYPERBOLIC_NAMED_PARAMETER(input_edge_length_map, ricci_edge_length_map_t)
 /// named parameter `geometric_initial_flips(bool [, np])` (default false; vertex scaling only): first make the
 /// input intrinsically Delaunay by geometric flips (which keep its piecewise-linear Euclidean metric), then flow
 /// with Ptolemy flips (Gillespie-Springborn-Crane 2021). The result then depends only on the input's metric,
 /// not on its triangulation; without it, the discrete conformal class is the Penner class of the input
-/// triangulation (Moebius invariant).
-CGAL_RICCI_FLOW_NAMED_PARAMETER(geometric_initial_flips, ricci_geometric_initial_flips_t)
-
-#undef CGAL_RICCI_FLOW_NAMED_PARAMETER
+/// triangulation (Moebius invariant). Inputs with degenerate (zero-area) faces get these flips automatically.
+CGAL_HYPERBOLIC_NAMED_PARAMETER(geometric_initial_flips, ricci_geometric_initial_flips_t)
+/// named parameter `sparse_solver(Sparse_solver s [, np])` (default `Sparse_solver::DEFAULT`)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(sparse_solver, ricci_sparse_solver_t)
+/// named parameter `puncture_vertex(std::size_t i [, np])`: the vertex (index in `vertices(tm)`) sent to the
+/// north pole by `spherical_uniformization()` (default: a vertex of largest degree)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(puncture_vertex, ricci_puncture_vertex_t)
 
 } // namespace parameters
 
-} // namespace Ricci_flow
+} // namespace Discrete_Ricci_flow
+
+/// \ingroup PkgDiscreteRicciFlowRef
+/// Short alias of the package namespace: `CGAL::Ricci_flow::hyperbolic_uniformization(tm)`.
+namespace Ricci_flow = Discrete_Ricci_flow;
 } // namespace CGAL
 
 #endif // CGAL_DISCRETE_RICCI_FLOW_FLOW_TYPES_H

@@ -9,11 +9,12 @@
 #define CGAL_DISCRETE_RICCI_FLOW_HYPERBOLIC_EMBEDDING_H
 
 #include <CGAL/Discrete_Ricci_flow/compute_metric.h>
+#include <CGAL/Discrete_Ricci_flow/internal/embedding_motions.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Hyperbolic_surface_2/Homotopy_basis.h>
+#include <CGAL/Hyperbolic_surface_2/Hyperbolic_surface_triangulation.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
 #include <CGAL/Poincare_disk_isometry_2.h>
-
-#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <complex>
@@ -27,81 +28,33 @@
 #include <vector>
 
 namespace CGAL {
-namespace Ricci_flow {
-
-namespace internal {
-
-// the layout runs in long double: the domain reaches far towards the boundary of the disk, where double
-// coordinates lose about log10(e^D) digits at hyperbolic distance D from the origin
-typedef long double Real;
-typedef std::complex<Real> Cplx;
-
-/// a Moebius map z -> (a z + b) / (c z + d) as a complex 2x2 matrix (isometries of H^2 in the Poincare disk
-/// and Euclidean motions z -> e^{i phi} z + t are both of this form)
-struct Moebius
-{
-  Cplx a = 1, b = 0, c = 0, d = 1;
-  Cplx operator()(Cplx z) const { return (a * z + b) / (c * z + d); }
-  Moebius operator*(const Moebius& g) const
-  {
-    Moebius r;
-    r.a = a * g.a + b * g.c; r.b = a * g.b + b * g.d; r.c = c * g.a + d * g.c; r.d = c * g.b + d * g.d;
-    return r;
-  }
-  Moebius inverse() const { Moebius r; r.a = d; r.b = -b; r.c = -c; r.d = a; return r; }
-  Moebius normalized() const
-  {
-    const Cplx s = std::sqrt(a * d - b * c);
-    Moebius r; r.a = a / s; r.b = b / s; r.c = c / s; r.d = d / s;
-    return r;
-  }
-};
-
-/// the isometry taking p to 0 and q to the positive real axis (hyperbolic: Poincare disk; else Euclidean)
-inline Moebius standard_position(bool hyperbolic, Cplx p, Cplx q)
-{
-  Moebius t;
-  if(hyperbolic) { t.a = 1; t.b = -p; t.c = -std::conj(p); t.d = 1; }
-  else { t.a = 1; t.b = -p; t.c = 0; t.d = 1; }
-  const Cplx w = t(q);
-  const Cplx rot = std::conj(w) / Real(std::abs(w));
-  t.a *= rot; t.b *= rot;
-  return t;
-}
-
-/// the orientation-preserving isometry mapping p1 -> p2 and q1 -> q2 (assuming d(p1,q1) = d(p2,q2))
-inline Moebius isometry_from_pairs(bool hyperbolic, Cplx p1, Cplx q1, Cplx p2, Cplx q2)
-{
-  return standard_position(hyperbolic, p2, q2).inverse() * standard_position(hyperbolic, p1, q1);
-}
-
-} // namespace internal
+namespace Discrete_Ricci_flow {
 
 /*!
   \ingroup PkgDiscreteRicciFlowRef
   The universal cover of a closed surface with a hyperbolic metric (genus >= 2) embedded in the Poincare disk,
-  or of a flat torus (genus 1) embedded in the plane, computed from a `Discrete_metric` (thesis Section 2.3.1).
+  or of a flat torus (genus 1) embedded in the plane, computed from a `Discrete_metric` (thesis Section 2.3.1)
+  with the shared surface layer `CGAL::Hyperbolic_surface_2`.
 
   Construction (cost O(n log n)):
-  - homotopy basis at the base vertex b (Erickson-Whittlesey greedy tree-cotree): T = shortest-path tree from
-    b, C = maximum spanning tree of the dual graph on the edges not in T, weighted by the length of the loop
-    through the edge; the 2g remaining edges e_i = (u_i -> v_i) give the loops
-    `gamma_i = T(b -> u_i) . e_i . T(v_i -> b)` (`homotopy_basis()`, halfedges of the intrinsic mesh);
-  - the fundamental domain D: the surface cut along a *compact* cut graph (the edges not crossed by a
-    shortest-path tree of the dual graph grown from the base face, pruned of dangling trees), laid out
-    isometrically (cosine law, breadth-first, in long double) with the base vertex at the origin
-    (`corner_position()`, `domain_boundary()`); every face stays within a few units of the origin, where double
-    coordinates are accurate;
-  - deck transformations: the holonomy of each loop gamma_i (developing the metric along gamma_i through D,
-    composing the side pairings crossed), an element of SU(1,1) (`deck_transformations()`), or a translation for
-    the torus (`periods()`);
-  - the relator: the boundary of the disk cut along the loops gamma_i (read combinatorially) as a word in the
-    loops; the product of the deck transformations in that order is the identity (`relator()`,
-    `relator_product()`, `relator_polygon()`);
-  - the side pairings of D: each maximal path of its cut graph appears twice on the boundary of D; the isometry
-    mapping one copy onto the other (`side_pairings()`), used for the tiling (`write_tiling_svg()`).
+  - the homotopy basis is the layer's `CGAL::Hyperbolic_surface_2::Homotopy_basis` at the base vertex (greedy
+    tree-cotree, loops x_1 .. x_2g sorted by length; `basis()`, `homotopy_basis()`): deck transformation i is
+    the holonomy of loop i of that class, the same loop as generator i of `Surface_shortest_words`;
+  - deck transformations: each loop is developed through the faces it turns around, with the layer's per-face
+    charts (every chart has its face's barycentre at the origin) and transition isometries across the edges,
+    composed in long double (`Poincare_disk_isometry_2` over a long-double kernel); no point is ever laid out
+    far from an origin, so the accuracy does not depend on the size of the surface. The frame is the chart of
+    the face of `halfedge(base)` moved so that the base vertex is at the origin;
+  - the relator: the boundary of the disk cut along the loops, read in the loops (`relator()`); the product of
+    the deck transformations in that order is the identity (`relator_defect()`);
+  - the canonical system a1, b1, ..., ag, bg (relator [a1, b1] ... [ag, bg]) from
+    `Homotopy_basis::canonical_change()`: `canonical_deck_transformations()` are the products of the x_i's,
+    `canonical_relator_defect()`, `canonical_polygon()`;
+  - the fundamental domain D, for pictures and side pairings: the surface cut along a compact cut graph (the
+    edges not crossed by a shortest-path tree of the dual graph grown from the base face), laid out chart by
+    chart (`corner_position()`, `domain_boundary()`, `side_pairings()`, `write_tiling_svg()`).
 
-  The deck transformation of a based loop maps the lift of its start (in D) to the lift of its end, and its
+  The deck transformation of a based loop maps the lift of its start to the lift of its end, and its
   translation length `2 acosh(|trace| / 2)` is the length of the closed geodesic freely homotopic to the loop.
 */
 template <class Point_3>
@@ -119,43 +72,49 @@ public:
   /// SU(1,1) isometries of the Poincare disk in double precision
   typedef CGAL::Poincare_disk_isometry_2<Kernel> Isometry;
   typedef std::complex<double> Complex;
+  typedef CGAL::Hyperbolic_surface_2::Homotopy_basis<Mesh> Basis;
+  typedef CGAL::Hyperbolic_surface_2::Hyperbolic_surface_triangulation<Mesh, typename Metric::Edge_length_map> Surface;
+  typedef CGAL::Hyperbolic_surface_2::Word Word;
+  /// isometries in long double (the side pairings of a large domain have entries beyond double's range of
+  /// accurate determinants)
+  typedef CGAL::Poincare_disk_isometry_2<CGAL::Simple_cartesian<long double> > Long_isometry;
 
   /// one side of the domain: the cut path as halfedges with D on their left, its twin side, and the map
-  /// taking the twin copy onto this one
+  /// taking the twin copy onto this one (`pairing` for the hyperbolic background, the translation
+  /// `translation` for the flat torus)
   struct Side
   {
     std::vector<Halfedge_index> halfedges; ///< consecutive halfedges along the boundary of D
     std::size_t twin = 0;                  ///< index of the paired side
-    internal::Moebius pairing;             ///< maps the twin's copy onto this side's copy
+    Long_isometry pairing;                 ///< maps the twin's copy onto this side's copy (hyperbolic)
+    Complex translation;                   ///< the same for the flat torus (z -> z + translation)
   };
 
   /*!
     Builds the embedding (a copy of `metric` is kept, shared by copies of the embedding). `metric` must be a
     converged (or stagnated below 1e-9) metric of a closed surface with a hyperbolic background
     (genus >= 2) or a Euclidean background (genus 1), with zero target curvature everywhere (no cones).
-    \throws Ricci_flow_error otherwise.
+    \throws CGAL::Invalid_metric_error, CGAL::Invalid_mesh_error, CGAL::Invalid_option_error otherwise.
   */
   explicit Hyperbolic_embedding(const Metric& metric, Vertex_index base = Vertex_index(0))
     : metric_ptr_(std::make_shared<const Metric>(metric)), metric_(*metric_ptr_), m_(metric_.intrinsic_mesh()),
       base_(base)
   {
-    hyperbolic_ = metric.background_geometry() == Background_geometry::HYPERBOLIC;
-    if(metric.background_geometry() == Background_geometry::SPHERICAL)
-      throw Ricci_flow_error("no embedding for the spherical background");
-    if(!CGAL::is_closed(m_)) throw Ricci_flow_error("the embedding needs a closed surface");
-    if(std::size_t(base) >= m_.number_of_vertices()) throw Ricci_flow_error("invalid base vertex");
-    for(double k : metric.target_curvatures())
-      if(k != 0) throw Ricci_flow_error("the embedding needs zero target curvature at every vertex (no cone points)");
-    const long g = metric.genus();
-    if(hyperbolic_ && g < 2) throw Ricci_flow_error("a hyperbolic embedding needs genus >= 2");
-    if(!hyperbolic_ && g != 1) throw Ricci_flow_error("a Euclidean embedding needs genus 1");
-    if(!metric.converged() && !(metric.statistics().status == Flow_status::STAGNATED &&
-                                metric.statistics().max_curvature_error < 1e-9))
-      throw Ricci_flow_error("the metric did not converge");
-    build_homotopy_basis();
+    check_metric(metric);
+    if(hyperbolic_)
+      surface_ = std::make_shared<const Surface>(metric_.hyperbolic_surface(
+        CGAL::Hyperbolic_surface_2::parameters::require_smooth_metric(false)));
+    basis_ = std::make_shared<const Basis>(m_, base_, metric_.edge_length_map());
+    root_ = m_.halfedge(base_); // target(root_) == base
+    const std::array<internal::Cplx, 3> z = chart(m_.face(root_));
+    const internal::Cplx zb = z[index_in_face(m_.next(root_))]; // source(next(root)) = base
+    frame_ = hyperbolic_ ? internal::Motion::from(internal::Long_isometry::translation_to_origin(
+                             internal::Long_kernel::Point_2(zb.real(), zb.imag())))
+                         : internal::Motion::euclidean(1, -zb);
+    for(const int l : basis_->relator()) relator_.push_back({std::size_t(std::abs(l) - 1), l > 0 ? 1 : -1});
+    compute_holonomies();
     build_domain_cut();
     layout();
-    compute_holonomies();
     compute_boundary();
   }
 
@@ -164,77 +123,107 @@ public:
   const Mesh& mesh() const { return m_; }
   Vertex_index base_vertex() const { return base_; }
   long genus() const { return metric_.genus(); }
-  std::size_t number_of_generators() const { return loops_.size(); }
+  std::size_t number_of_generators() const { return basis_->number_of_generators(); }
+  /// the layer's homotopy basis on `mesh()` (loop i is deck transformation i)
+  const Basis& basis() const { return *basis_; }
 
-  /// the 2g loops of the homotopy basis: halfedges of `mesh()` (the same indices as in the metric's
-  /// `intrinsic_mesh()`), each loop starts and ends at `base_vertex()`
-  const std::vector<std::vector<Halfedge_index> >& homotopy_basis() const { return loops_; }
+  /// the 2g loops of the homotopy basis (`basis().loop(i)`): halfedges of `mesh()`, from `base_vertex()`
+  std::vector<std::vector<Halfedge_index> > homotopy_basis() const
+  {
+    std::vector<std::vector<Halfedge_index> > r;
+    for(std::size_t i = 0; i < number_of_generators(); ++i) r.push_back(basis_->loop(i));
+    return r;
+  }
 
   /// the length of loop i in the metric (at least its translation length)
   double loop_length(std::size_t i) const
   {
     double s = 0;
-    for(Halfedge_index h : loops_[i]) s += metric_.length(h);
+    for(Halfedge_index h : basis_->loop(i)) s += metric_.length(h);
     return s;
   }
 
-  /// the deck transformation of loop i as a Moebius map (complex 2x2, determinant 1)
-  const internal::Moebius& holonomy(std::size_t i) const { return hol_[i]; }
-
+  /// the deck transformation of loop i (hyperbolic background)
+  Isometry deck_transformation(std::size_t i) const
+  {
+    if(!hyperbolic_) internal::throw_option_error("deck_transformation(): the flat torus has periods(), not isometries");
+    return internal::to_double(hol_[i].h);
+  }
   /// the deck transformations of the 2g loops as SU(1,1) isometries (hyperbolic background only)
   std::vector<Isometry> deck_transformations() const
   {
     std::vector<Isometry> r;
-    for(const auto& h : hol_) r.push_back(to_isometry(h));
+    for(std::size_t i = 0; i < hol_.size(); ++i) r.push_back(deck_transformation(i));
     return r;
   }
 
   /// translation length of the deck transformation of loop i: 2 acosh(|trace| / 2) (H^2), |period| (E^2)
   double translation_length(std::size_t i) const
   {
-    if(!hyperbolic_) return double(std::abs(hol_[i].b / hol_[i].d));
+    if(!hyperbolic_) return double(std::abs(hol_[i].b));
     return 2 * std::acosh((std::max)(1.0, absolute_trace(i) / 2));
   }
 
   /// |trace| of the normalized deck transformation of loop i (> 2 for a hyperbolic translation)
-  double absolute_trace(std::size_t i) const { return double(std::abs((hol_[i].a + hol_[i].d).real())); }
+  double absolute_trace(std::size_t i) const
+  {
+    if(!hyperbolic_) return 2.0;
+    return double(std::sqrt(hol_[i].h.squared_normalized_trace()));
+  }
 
-  /// the relator: the boundary of the fundamental domain read as letters (loop index, +1 or -1)
+  /// the relator: the boundary of the cut disk read as letters (loop index, +1 or -1): `basis().relator()`
   const std::vector<std::pair<std::size_t, int> >& relator() const { return relator_; }
 
   /// the product of the deck transformations along `relator()` (the identity up to rounding)
-  internal::Moebius relator_product() const
+  Isometry relator_product() const { return internal::to_double(product(relator_word()).h); }
+
+  /// distance of the relator product to the identity (max entry difference of the normalized matrix, up to
+  /// sign; for the torus |rotation - 1| + |translation|), computed in long double
+  double relator_defect() const { return double(product(relator_word()).defect()); }
+
+  /// the conditioning of the relator product: max_k cosh d(0, P_k(0)) over the partial products P_k of
+  /// `relator()` (about the squared norm of the matrices). Rounding errors of the deck transformations are
+  /// amplified by it: `relator_defect()` is at least about 1e-16 times this value, whatever the method.
+  double relator_condition() const
   {
-    internal::Moebius m;
-    for(const auto& l : relator_) m = m * (l.second > 0 ? hol_[l.first] : hol_[l.first].inverse());
-    return m.normalized();
+    double c = 1;
+    internal::Motion m = internal::Motion::identity(hyperbolic_);
+    for(const int l : relator_word()) {
+      m = (m * letter(l)).normalized();
+      if(hyperbolic_) c = (std::max)(c, double(m.h.alpha_real() * m.h.alpha_real() + m.h.alpha_imag() * m.h.alpha_imag() +
+                                               m.h.beta_real() * m.h.beta_real() + m.h.beta_imag() * m.h.beta_imag()));
+    }
+    return c;
   }
 
   /// The relator polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (0), k = 0 .. 4g-1, for the letters
-  /// w_k of `relator()` (the base vertex's copy is at the origin). Its geodesic sides are lifts of the geodesic
-  /// loops based at the base vertex in the classes of the basis loops; when those geodesic loops are simple and
-  /// meet only at the base vertex it is a fundamental polygon of the group, paired by the deck transformations
-  /// (e.g. the regular octagon of the Bolza surface based at a Weierstrass point).
-  std::vector<Complex> relator_polygon() const
+  /// w_k of `relator()` (the base vertex's copy is at the origin).
+  std::vector<Complex> relator_polygon() const { return polygon(relator_word()); }
+
+  /// the canonical generators a1, b1, ..., ag, bg as words in the loops (`Homotopy_basis::canonical_change()`)
+  const std::vector<Word>& canonical_words() const { return basis_->canonical_change().new_in_old; }
+  /// their deck transformations (products of the x_i's deck transformations), hyperbolic background
+  std::vector<Isometry> canonical_deck_transformations() const
+  {
+    std::vector<Isometry> r;
+    for(const Word& w : canonical_words()) r.push_back(internal::to_double(product_in_loops(w).h));
+    return r;
+  }
+  /// the defect of [a1, b1] ... [ag, bg] evaluated on `canonical_deck_transformations()`
+  double canonical_relator_defect() const { return double(canonical_product().defect()); }
+  /// the canonical fundamental polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (0) along
+  /// a1 b1 a1^-1 b1^-1 ...
+  std::vector<Complex> canonical_polygon() const
   {
     std::vector<Complex> p;
-    internal::Moebius m;
-    for(const auto& l : relator_) {
+    internal::Motion m = internal::Motion::identity(hyperbolic_);
+    const std::vector<internal::Motion> c = canonical_motions();
+    for(const int l : canonical_relator()) {
       const internal::Cplx z = m(internal::Cplx(0));
       p.push_back(Complex(double(z.real()), double(z.imag())));
-      m = m * (l.second > 0 ? hol_[l.first] : hol_[l.first].inverse());
+      m = m * (l > 0 ? c[l - 1] : c[-l - 1].inverse());
     }
     return p;
-  }
-
-  /// distance of `relator_product()` to +-I (max entry difference)
-  double relator_defect() const
-  {
-    const internal::Moebius m = relator_product();
-    const internal::Cplx one(1);
-    const internal::Real dp = (std::max)({std::abs(m.a - one), std::abs(m.b), std::abs(m.c), std::abs(m.d - one)});
-    const internal::Real dm = (std::max)({std::abs(m.a + one), std::abs(m.b), std::abs(m.c), std::abs(m.d + one)});
-    return double((std::min)(dp, dm));
   }
 
   /// position of `target(h)` in the copy of `face(h)` laid out in the fundamental domain
@@ -251,16 +240,16 @@ public:
   /// the sides of the domain (maximal cut paths), each paired with its twin
   const std::vector<Side>& side_pairings() const { return sides_; }
 
-  /// the flat torus only: the two periods (translations of the two loops), the lattice parameter
-  /// tau = period_2 / period_1 reduced to the fundamental region of SL(2,Z) (Im tau > 0, |Re tau| <= 1/2,
-  /// |tau| >= 1)
+  /// the flat torus only: the two periods (translations of the two loops)
   std::pair<Complex, Complex> periods() const
   {
-    if(hyperbolic_ || hol_.size() != 2) throw Ricci_flow_error("periods() is for the flat torus");
-    const internal::Cplx p0 = hol_[0].b / hol_[0].d, p1 = hol_[1].b / hol_[1].d;
+    if(hyperbolic_ || hol_.size() != 2) internal::throw_option_error("periods() is for the flat torus");
+    const internal::Cplx p0 = hol_[0].b, p1 = hol_[1].b;
     return {Complex(double(p0.real()), double(p0.imag())), Complex(double(p1.real()), double(p1.imag()))};
   }
 
+  /// the lattice parameter tau = period_2 / period_1 reduced to the fundamental region of SL(2,Z)
+  /// (Im tau > 0, |Re tau| <= 1/2, |tau| >= 1)
   Complex lattice_parameter() const
   {
     const auto p = periods();
@@ -274,12 +263,12 @@ public:
     return tau;
   }
 
-  /// SVG picture of the fundamental domain: triangles (shaded by area) and the cut in red
+  /// SVG picture of the fundamental domain: triangles and the cut in red
   void write_fundamental_domain_svg(const std::string& filename, double size_px = 900) const
   {
     CGAL::Poincare_disk_svg_writer w(size_px, hyperbolic_ ? 1.0 : view_zoom(), 0, 0);
     if(hyperbolic_) w.add_unit_circle();
-    const internal::Moebius t = view_transform();
+    const internal::Motion t = view_transform();
     for(Face_index f : m_.faces()) {
       const Halfedge_index h = m_.halfedge(f);
       std::vector<double> xy;
@@ -304,10 +293,10 @@ public:
   {
     CGAL::Poincare_disk_svg_writer w(size_px, hyperbolic_ ? 1.0 : view_zoom() / (1 + max_word_length), 0, 0);
     if(hyperbolic_) w.add_unit_circle();
-    const internal::Moebius view = view_transform();
-    struct Node { internal::Moebius g; int len; };
+    const internal::Motion view = view_transform();
+    struct Node { internal::Motion g; int len; };
     std::deque<Node> queue;
-    queue.push_back({internal::Moebius(), 0});
+    queue.push_back({internal::Motion::identity(hyperbolic_), 0});
     std::vector<internal::Cplx> seen;
     const internal::Cplx probe = internal::Real(0.5) * pos_[m_.next(root_)];
     std::size_t drawn = 0;
@@ -333,129 +322,160 @@ public:
       ++drawn;
       const bool tiny = hyperbolic_ && (xmax - xmin) + (ymax - ymin) < 4.0 / size_px;
       if(nd.len >= max_word_length || tiny) continue;
-      for(const Side& sd : sides_) queue.push_back({nd.g * sd.pairing, nd.len + 1});
+      for(const internal::Motion& p : pairings_) queue.push_back({nd.g * p, nd.len + 1});
     }
     w.write(filename);
     return drawn;
   }
 
 private:
-  static Isometry to_isometry(const internal::Moebius& h)
+  void check_metric(const Metric& metric)
   {
-    const internal::Moebius n = h.normalized();
-    return Isometry(double(n.a.real()), double(n.a.imag()), double(n.b.real()), double(n.b.imag()));
-  }
-
-  // the isometry moving the (Euclidean) mean of the domain's corners to the origin, for pictures
-  internal::Moebius view_transform() const
-  {
-    internal::Cplx c(0);
-    for(const internal::Cplx& z : pos_) c += z;
-    c /= internal::Real(pos_.empty() ? 1 : pos_.size());
-    internal::Moebius t;
-    if(hyperbolic_) { t.b = -c; t.c = -std::conj(c); } else t.b = -c;
-    return t;
-  }
-
-  double view_zoom() const
-  {
-    double r = 1e-300;
-    const internal::Moebius t = view_transform();
-    for(const internal::Cplx& z : pos_) r = (std::max)(r, double(std::abs(t(z))));
-    return 0.9 / r;
+    hyperbolic_ = metric.background_geometry() == Background_geometry::HYPERBOLIC;
+    if(metric.background_geometry() == Background_geometry::SPHERICAL)
+      internal::throw_metric_error("no embedding for the spherical background (see spherical_uniformization())");
+    if(!CGAL::is_closed(m_)) internal::throw_mesh_error("the embedding needs a closed surface");
+    if(std::size_t(base_) >= m_.number_of_vertices()) internal::throw_option_error("invalid base vertex");
+    for(double k : metric.target_curvatures())
+      if(k != 0) internal::throw_metric_error("the embedding needs zero target curvature at every vertex (no cone points)");
+    const long g = metric.genus();
+    if(hyperbolic_ && g < 2) internal::throw_mesh_error("a hyperbolic embedding needs genus >= 2");
+    if(!hyperbolic_ && g != 1) internal::throw_mesh_error("a Euclidean embedding needs genus 1");
+    if(!metric.converged() && !(metric.statistics().status == Flow_status::STAGNATED &&
+                                metric.statistics().max_curvature_error < 1e-9))
+      internal::throw_metric_error("the metric did not converge");
   }
 
   double len(Halfedge_index h) const { return metric_.length(h); }
 
-  // ---------------------------------------------------------------- greedy tree-cotree
-  void build_homotopy_basis()
+  int index_in_face(Halfedge_index g) const
   {
-    const std::size_t nv = m_.number_of_vertices(), ne = m_.number_of_edges(), nf = m_.number_of_faces();
-    // shortest-path tree from the base vertex (Dijkstra)
-    dist_.assign(nv, std::numeric_limits<double>::infinity());
-    parent_.assign(nv, Mesh::null_halfedge());
-    typedef std::pair<double, std::size_t> QE;
-    std::priority_queue<QE, std::vector<QE>, std::greater<QE> > pq;
-    dist_[base_] = 0; pq.push({0.0, std::size_t(base_)});
-    while(!pq.empty()) {
-      const QE top = pq.top(); pq.pop();
-      const Vertex_index v(static_cast<typename Vertex_index::size_type>(top.second));
-      if(top.first > dist_[v]) continue;
-      for(Halfedge_index h : CGAL::halfedges_around_source(v, m_)) {
-        const Vertex_index w = m_.target(h);
-        const double d = dist_[v] + len(h);
-        if(d < dist_[w]) { dist_[w] = d; parent_[w] = h; pq.push({d, std::size_t(w)}); }
+    const Halfedge_index h0 = m_.halfedge(m_.face(g));
+    return g == h0 ? 0 : (g == m_.next(h0) ? 1 : 2);
+  }
+
+  // ---------------------------------------------------------------- charts and transitions
+  // the chart of f: z[i] is the position of source(h_i), h_0 = halfedge(f), h_{i+1} = next(h_i)
+  std::array<internal::Cplx, 3> chart(Face_index f) const
+  {
+    if(hyperbolic_) {
+      const typename Surface::Face_chart c = surface_->chart(f);
+      std::array<internal::Cplx, 3> z;
+      for(int i = 0; i < 3; ++i) z[i] = internal::Cplx(c.z[i].x(), c.z[i].y());
+      return z;
+    }
+    const Halfedge_index h = m_.halfedge(f);
+    return internal::euclidean_chart(len(h), len(m_.next(h)), len(m_.prev(h)));
+  }
+
+  // maps the chart of face(h) to the chart of face(opposite(h))
+  internal::Motion transition(Halfedge_index h) const
+  {
+    if(hyperbolic_) return internal::Motion::from(internal::to_long(surface_->transition(h)));
+    const Halfedge_index o = m_.opposite(h);
+    const std::array<internal::Cplx, 3> cf = chart(m_.face(h)), cg = chart(m_.face(o));
+    const int ih = index_in_face(h), io = index_in_face(o);
+    // source(h) = target(o), target(h) = source(o)
+    return internal::euclidean_from_pairs(cf[ih], cf[(ih + 1) % 3], cg[(io + 1) % 3], cg[io]);
+  }
+
+  // ---------------------------------------------------------------- holonomies of the loops
+  // Developing along a loop: the current corner c (a halfedge entering the current vertex, in the current face);
+  // rotating counterclockwise to the next corner crosses edge(next(c)) into face(opposite(next(c))). M maps the
+  // chart of the current face to the chart of the root face's first copy.
+  void rotate(Halfedge_index& c, internal::Motion& M) const
+  {
+    const Halfedge_index g = m_.next(c);
+    M = M * transition(g).inverse();
+    c = m_.opposite(g);
+  }
+
+  internal::Motion develop(const std::vector<Halfedge_index>& loop) const
+  {
+    internal::Motion M = internal::Motion::identity(hyperbolic_);
+    Halfedge_index c = root_;
+    const std::size_t guard_max = m_.number_of_halfedges();
+    for(Halfedge_index h : loop) {
+      std::size_t guard = 0;
+      while(m_.next(c) != h) {
+        rotate(c, M);
+        if(++guard > guard_max) internal::throw_mesh_error("develop: invalid loop");
       }
+      c = h;
     }
-    std::vector<char> in_tree(ne, 0);
-    for(Vertex_index v : m_.vertices()) {
-      if(v == base_) continue;
-      if(parent_[v] == Mesh::null_halfedge()) throw Ricci_flow_error("the mesh is not connected");
-      in_tree[m_.edge(parent_[v])] = 1;
+    std::size_t guard = 0;
+    while(c != root_) {
+      rotate(c, M);
+      if(++guard > guard_max) internal::throw_mesh_error("develop: invalid loop");
     }
-    // cotree: maximum spanning tree of the dual graph among non-tree edges, weight = loop length
-    std::vector<std::pair<double, std::size_t> > cand;
-    for(Edge_index e : m_.edges())
-      if(!in_tree[e]) {
-        const Halfedge_index h = m_.halfedge(e);
-        cand.push_back({dist_[m_.source(h)] + len(h) + dist_[m_.target(h)], std::size_t(e)});
-      }
-    std::sort(cand.begin(), cand.end(), [](const std::pair<double, std::size_t>& a, const std::pair<double, std::size_t>& b) {
-      return a.first > b.first || (a.first == b.first && a.second < b.second);
-    });
-    std::vector<std::size_t> rank(nf, 0), par(nf);
-    boost::disjoint_sets<std::size_t*, std::size_t*> ds(rank.data(), par.data());
-    for(std::size_t f = 0; f < nf; ++f) ds.make_set(f);
-    std::vector<std::pair<double, Edge_index> > leftover;
-    for(const auto& c : cand) {
-      const Edge_index e(static_cast<typename Edge_index::size_type>(c.second));
-      const Halfedge_index h = m_.halfedge(e);
-      const std::size_t f1 = m_.face(h), f2 = m_.face(m_.opposite(h));
-      const std::size_t r1 = ds.find_set(f1), r2 = ds.find_set(f2);
-      if(r1 != r2) ds.link(r1, r2);
-      else leftover.push_back({c.first, e});
+    return (frame_ * M * frame_.inverse()).normalized();
+  }
+
+  void compute_holonomies()
+  {
+    hol_.clear();
+    for(std::size_t i = 0; i < number_of_generators(); ++i) hol_.push_back(develop(basis_->loop(i)));
+  }
+
+  Word relator_word() const { return basis_->relator(); }
+  internal::Motion letter(int l) const { return l > 0 ? hol_[l - 1] : hol_[-l - 1].inverse(); }
+  internal::Motion product(const Word& w) const
+  {
+    internal::Motion m = internal::Motion::identity(hyperbolic_);
+    for(const int l : w) m = m * letter(l);
+    return m;
+  }
+  internal::Motion product_in_loops(const Word& w) const { return product(w).normalized(); }
+  std::vector<Complex> polygon(const Word& w) const
+  {
+    std::vector<Complex> p;
+    internal::Motion m = internal::Motion::identity(hyperbolic_);
+    for(const int l : w) {
+      const internal::Cplx z = m(internal::Cplx(0));
+      p.push_back(Complex(double(z.real()), double(z.imag())));
+      m = m * letter(l);
     }
-    if(long(leftover.size()) != 2 * metric_.genus())
-      throw Ricci_flow_error("tree-cotree found " + std::to_string(leftover.size()) + " generators, expected 2g");
-    std::sort(leftover.begin(), leftover.end(), [](const std::pair<double, Edge_index>& a, const std::pair<double, Edge_index>& b) {
-      return a.first < b.first || (a.first == b.first && a.second < b.second);
-    });
-    // loops and their union (the greedy cut graph)
-    greedy_cut_.assign(ne, 0);
-    for(const auto& lo : leftover) {
-      const Halfedge_index h = m_.halfedge(lo.second);
-      std::vector<Halfedge_index> up, loop;
-      for(Vertex_index v = m_.source(h); v != base_; v = m_.source(parent_[v])) up.push_back(parent_[v]);
-      loop.assign(up.rbegin(), up.rend());
-      loop.push_back(h);
-      for(Vertex_index v = m_.target(h); v != base_; v = m_.source(parent_[v])) loop.push_back(m_.opposite(parent_[v]));
-      for(Halfedge_index g : loop) greedy_cut_[m_.edge(g)] = 1;
-      generator_edge_.push_back(h);
-      loops_.push_back(loop);
-    }
+    return p;
+  }
+  static Word canonical_relator_of(std::size_t g)
+  {
+    Word r;
+    for(int k = 0; k < int(g); ++k) { const int a = 2 * k + 1, b = 2 * k + 2; r.insert(r.end(), {a, b, -a, -b}); }
+    return r;
+  }
+  Word canonical_relator() const { return canonical_relator_of(number_of_generators() / 2); }
+  std::vector<internal::Motion> canonical_motions() const
+  {
+    std::vector<internal::Motion> c;
+    for(const Word& w : canonical_words()) c.push_back(product_in_loops(w));
+    return c;
+  }
+  internal::Motion canonical_product() const
+  {
+    const std::vector<internal::Motion> c = canonical_motions();
+    internal::Motion m = internal::Motion::identity(hyperbolic_);
+    for(const int l : canonical_relator()) m = m * (l > 0 ? c[l - 1] : c[-l - 1].inverse());
+    return m;
   }
 
   // ---------------------------------------------------------------- a compact cut for the layout
   // The domain D is grown from the root face by a shortest-path tree of the dual graph (each step weighted by
-  // the distance between incircle-ish centres, approximated by a third of the two perimeters), so that every
-  // face of D is close to the base: the layout then stays far from the boundary of the disk, where double
-  // precision degrades. The cut is the set of edges not crossed by that dual tree, pruned of its dangling trees.
+  // a third of the two perimeters), so that every face of D is close to the base. The cut is the set of edges
+  // not crossed by that dual tree, pruned of its dangling trees.
   void build_domain_cut()
   {
     const std::size_t nf = m_.number_of_faces(), ne = m_.number_of_edges();
-    root_ = m_.halfedge(base_); // target(root_) == base
     std::vector<double> perim(nf, 0), fd(nf, std::numeric_limits<double>::infinity());
     for(Face_index f : m_.faces()) {
       const Halfedge_index h = m_.halfedge(f);
       perim[f] = len(h) + len(m_.next(h)) + len(m_.prev(h));
     }
-    std::vector<char> crossed(ne, 0);
+    std::vector<char> crossed(ne, 0), done(nf, 0);
     std::vector<Halfedge_index> via(nf, Mesh::null_halfedge());
     typedef std::pair<double, std::size_t> QE;
     std::priority_queue<QE, std::vector<QE>, std::greater<QE> > pq;
     const Face_index f0 = m_.face(root_);
     fd[f0] = 0; pq.push({0.0, std::size_t(f0)});
-    std::vector<char> done(nf, 0);
     while(!pq.empty()) {
       const QE top = pq.top(); pq.pop();
       const Face_index f(static_cast<typename Face_index::size_type>(top.second));
@@ -472,10 +492,7 @@ private:
     cut_.assign(ne, 0);
     std::vector<std::size_t> degree(m_.number_of_vertices(), 0);
     for(Edge_index e : m_.edges())
-      if(!crossed[e]) {
-        cut_[e] = 1;
-        ++degree[m_.vertex(e, 0)]; ++degree[m_.vertex(e, 1)];
-      }
+      if(!crossed[e]) { cut_[e] = 1; ++degree[m_.vertex(e, 0)]; ++degree[m_.vertex(e, 1)]; }
     // prune: remove cut edges at vertices of cut-degree 1, repeatedly (a loop edge counts twice)
     std::vector<Vertex_index> stack;
     for(Vertex_index v : m_.vertices()) if(degree[v] == 1) stack.push_back(v);
@@ -493,116 +510,36 @@ private:
     }
   }
 
-  // ---------------------------------------------------------------- layout of the disk D
+  // ---------------------------------------------------------------- layout of the disk D, chart by chart
   void layout()
   {
-    const bool hyp = hyperbolic_;
     pos_.assign(m_.number_of_halfedges(), internal::Cplx(0));
+    place_.assign(m_.number_of_faces(), internal::Motion::identity(hyperbolic_));
     std::vector<char> placed(m_.number_of_faces(), 0);
-    // root face: the face of a halfedge entering the base vertex; base at 0, the edge along the real axis
     const Face_index f0 = m_.face(root_);
-    {
-      const Halfedge_index h = root_;             // source(h) -> base
-      const Halfedge_index n = m_.next(h);        // base -> third
-      const double l_h = len(h), l_n = len(n), l_p = len(m_.prev(h));
-      // corner at base between n and h: angle opposite to prev(h)
-      const internal::Real th = angle_opposite(m_.prev(h));
-      pos_[h] = 0; // base
-      pos_[n] = polar(hyp, l_n, 0.0);                       // third vertex on the positive real axis
-      pos_[m_.prev(h)] = polar(hyp, l_h, th);               // source(h), at angle th counterclockwise
-      (void)l_p;
-      placed[f0] = 1;
-    }
+    place_[f0] = frame_;
+    placed[f0] = 1;
     std::deque<Face_index> queue(1, f0);
     while(!queue.empty()) {
       const Face_index f = queue.front(); queue.pop_front();
       const Halfedge_index h0 = m_.halfedge(f);
-      for(Halfedge_index h : {h0, m_.next(h0), m_.prev(h0)}) {
+      const std::array<internal::Cplx, 3> z = chart(f);
+      const Halfedge_index hs[3] = {h0, m_.next(h0), m_.prev(h0)};
+      for(int i = 0; i < 3; ++i) pos_[hs[i]] = place_[f](z[(i + 1) % 3]); // target(h_i) = source(h_{i+1})
+      for(Halfedge_index h : hs) {
         if(cut_[m_.edge(h)]) continue;
-        const Halfedge_index o = m_.opposite(h);
-        const Face_index g = m_.face(o);
+        const Face_index g = m_.face(m_.opposite(h));
         if(placed[g]) continue;
-        // o runs target(h) -> source(h); positions from face f: p = source(o) = target(h), q = target(o)
-        const internal::Cplx p = pos_[h], q = pos_[m_.prev(h)];
-        pos_[o] = q;
-        pos_[m_.prev(o)] = p;
-        // third vertex r = target(next(o)), left of p -> q, at distance len(prev(o)) from p, angle at p
-        const internal::Real th = angle_opposite(m_.next(o)); // corner at source(o) is opposite to next(o)
-        const internal::Moebius s = internal::standard_position(hyp, p, q);
-        pos_[m_.next(o)] = s.inverse()(polar(hyp, len(m_.prev(o)), th));
+        place_[g] = place_[f] * transition(h).inverse();
         placed[g] = 1;
         queue.push_back(g);
       }
     }
     for(Face_index f : m_.faces())
-      if(!placed[f]) throw Ricci_flow_error("the cut does not leave a disk (layout incomplete)");
+      if(!placed[f]) internal::throw_mesh_error("the cut does not leave a disk (layout incomplete)");
   }
 
-  static internal::Cplx polar(bool hyperbolic, double length, internal::Real angle)
-  {
-    const internal::Real l = length;
-    const internal::Real r = hyperbolic ? std::tanh(l / 2) : l;
-    return std::polar(r, angle);
-  }
-
-  // the corner angle opposite to h in face(h), in long double (half-angle formula)
-  internal::Real angle_opposite(Halfedge_index h) const
-  {
-    const internal::Real a = len(h), b = len(m_.next(h)), c = len(m_.prev(h));
-    const internal::Real s = (a + b + c) / 2;
-    auto f = [&](internal::Real x) { return hyperbolic_ ? std::sinh(x) : x; };
-    const internal::Real num = f(s - b) * f(s - c), den = f(s) * f(s - a);
-    if(!(num > 0) || !(den > 0)) return !(num > 0) ? internal::Real(0) : internal::Real(CGAL_PI);
-    return 2 * std::atan2(std::sqrt(num), std::sqrt(den));
-  }
-
-  // the transition across halfedge g: maps the copy of face(opposite(g)) onto the copy of face(g)
-  internal::Moebius transition(Halfedge_index g) const
-  {
-    const Halfedge_index o = m_.opposite(g);
-    // in face(g): source(g) at pos[prev(g)], target(g) at pos[g]; in face(o): source(g) = target(o) at pos[o],
-    // target(g) = source(o) at pos[prev(o)]
-    return internal::isometry_from_pairs(hyperbolic_, pos_[o], pos_[m_.prev(o)], pos_[m_.prev(g)], pos_[g]);
-  }
-
-  // ---------------------------------------------------------------- holonomies of the loops
-  // Developing along a loop: the current corner c (a halfedge entering the current vertex, in the current face);
-  // rotating counterclockwise to the next corner crosses edge(next(c)); crossing a cut edge composes the
-  // transition. M maps the domain copy of the current face to its lift.
-  void rotate(Halfedge_index& c, internal::Moebius& M) const
-  {
-    const Halfedge_index g = m_.next(c);
-    if(cut_[m_.edge(g)]) M = M * transition(g);
-    c = m_.opposite(g);
-  }
-
-  internal::Moebius develop(const std::vector<Halfedge_index>& loop) const
-  {
-    internal::Moebius M;
-    Halfedge_index c = root_;
-    for(Halfedge_index h : loop) {
-      std::size_t guard = 0;
-      while(m_.next(c) != h) {
-        rotate(c, M);
-        if(++guard > m_.number_of_halfedges()) throw Ricci_flow_error("develop: invalid loop");
-      }
-      c = h;
-    }
-    std::size_t guard = 0;
-    while(c != root_) {
-      rotate(c, M);
-      if(++guard > m_.number_of_halfedges()) throw Ricci_flow_error("develop: invalid loop");
-    }
-    return M.normalized();
-  }
-
-  void compute_holonomies()
-  {
-    hol_.clear();
-    for(const auto& loop : loops_) hol_.push_back(develop(loop));
-  }
-
-  // ---------------------------------------------------------------- boundary, relator, sides
+  // ---------------------------------------------------------------- boundary and sides
   // the face walk of the ribbon graph formed by the cut edges: from a cut halfedge h, rotate around target(h)
   // (crossing non-cut edges) to the next cut halfedge. For a cut graph this walks once around the disk.
   std::vector<Halfedge_index> boundary_walk(const std::vector<char>& cut) const
@@ -617,33 +554,22 @@ private:
       Halfedge_index g = m_.next(h);
       while(!cut[m_.edge(g)]) g = m_.next(m_.opposite(g));
       h = g;
-      if(walk.size() > 2 * ncut) throw Ricci_flow_error("boundary walk does not close");
+      if(walk.size() > 2 * ncut) internal::throw_mesh_error("boundary walk does not close");
     } while(h != start);
-    if(walk.size() != 2 * ncut) throw Ricci_flow_error("the cut graph does not bound a single disk");
+    if(walk.size() != 2 * ncut) internal::throw_mesh_error("the cut graph does not bound a single disk");
     return walk;
   }
 
   void compute_boundary()
   {
     boundary_ = boundary_walk(cut_);
-    // relator letters: the boundary of the disk cut along the greedy loops, read in the loops
-    relator_.clear();
-    for(Halfedge_index b : boundary_walk(greedy_cut_))
-      for(std::size_t i = 0; i < generator_edge_.size(); ++i) {
-        if(b == generator_edge_[i]) relator_.push_back({i, +1});
-        else if(b == m_.opposite(generator_edge_[i])) relator_.push_back({i, -1});
-      }
-    // sides: maximal runs of the boundary whose twin halfedges are consecutive in reverse
     std::vector<std::size_t> index_of(m_.number_of_halfedges(), std::size_t(-1));
     for(std::size_t k = 0; k < boundary_.size(); ++k) index_of[boundary_[k]] = k;
     const std::size_t nb = boundary_.size();
     auto twin_index = [&](std::size_t k) { return index_of[m_.opposite(boundary_[k])]; };
     // a side starts at k if the twin of k-1 is not the successor of the twin of k
     std::vector<char> starts(nb, 0);
-    for(std::size_t k = 0; k < nb; ++k) {
-      const std::size_t prev = (k + nb - 1) % nb;
-      starts[k] = twin_index(prev) != (twin_index(k) + 1) % nb;
-    }
+    for(std::size_t k = 0; k < nb; ++k) starts[k] = twin_index((k + nb - 1) % nb) != (twin_index(k) + 1) % nb;
     sides_.clear();
     std::vector<std::size_t> side_of(nb, 0);
     std::size_t k0 = 0;
@@ -655,11 +581,35 @@ private:
       sides_.back().halfedges.push_back(boundary_[k]);
       side_of[k] = sides_.size() - 1;
     }
+    pairings_.clear();
     for(std::size_t s = 0; s < sides_.size(); ++s) {
-      const Halfedge_index first = sides_[s].halfedges.front();
-      sides_[s].twin = side_of[index_of[m_.opposite(first)]];
-      sides_[s].pairing = transition(first).normalized();
+      const Halfedge_index g = sides_[s].halfedges.front(), o = m_.opposite(g);
+      sides_[s].twin = side_of[index_of[o]];
+      // the copy of face(o) adjacent to the copy of face(g) across g, from the domain's copy of face(o)
+      const internal::Motion p = (place_[m_.face(g)] * transition(g).inverse() * place_[m_.face(o)].inverse()).normalized();
+      pairings_.push_back(p);
+      if(hyperbolic_) sides_[s].pairing = p.h;
+      else sides_[s].translation = Complex(double(p.b.real()), double(p.b.imag()));
     }
+  }
+
+  // the isometry moving the (Euclidean) mean of the domain's corners to the origin, for pictures
+  internal::Motion view_transform() const
+  {
+    internal::Cplx c(0);
+    for(const internal::Cplx& z : pos_) c += z;
+    c /= internal::Real(pos_.empty() ? 1 : pos_.size());
+    if(!hyperbolic_) return internal::Motion::euclidean(1, -c);
+    if(!(std::abs(c) < 1)) return internal::Motion::identity(true);
+    return internal::Motion::from(internal::Long_isometry::translation_to_origin(internal::Long_kernel::Point_2(c.real(), c.imag())));
+  }
+
+  double view_zoom() const
+  {
+    double r = 1e-300;
+    const internal::Motion t = view_transform();
+    for(const internal::Cplx& z : pos_) r = (std::max)(r, double(std::abs(t(z))));
+    return 0.9 / r;
   }
 
   std::shared_ptr<const Metric> metric_ptr_;
@@ -667,20 +617,19 @@ private:
   const Mesh& m_;
   Vertex_index base_;
   bool hyperbolic_ = true;
+  std::shared_ptr<const Surface> surface_;
+  std::shared_ptr<const Basis> basis_;
   Halfedge_index root_;
-  std::vector<double> dist_;
-  std::vector<Halfedge_index> parent_;
-  std::vector<char> cut_, greedy_cut_;
-  std::vector<Halfedge_index> generator_edge_;
-  std::vector<std::vector<Halfedge_index> > loops_;
+  internal::Motion frame_;
+  std::vector<char> cut_;
   std::vector<internal::Cplx> pos_;
-  std::vector<internal::Moebius> hol_;
+  std::vector<internal::Motion> place_, hol_, pairings_;
   std::vector<Halfedge_index> boundary_;
   std::vector<std::pair<std::size_t, int> > relator_;
   std::vector<Side> sides_;
 };
 
-} // namespace Ricci_flow
+} // namespace Discrete_Ricci_flow
 } // namespace CGAL
 
 #endif // CGAL_DISCRETE_RICCI_FLOW_HYPERBOLIC_EMBEDDING_H

@@ -23,7 +23,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Ricci_flow {
+namespace Discrete_Ricci_flow {
 namespace internal {
 
 template <class Point_3>
@@ -204,6 +204,18 @@ public:
       if(!m.is_border(h)) K[m.target(m.next(h))] -= angle[h];
   }
 
+  // true if a face violates a triangle inequality (its angles are Luo's extension (pi, 0, 0))
+  bool has_degenerate_face() const
+  {
+    for(F f : m.faces()) {
+      H hs[3]; V cs[3]; double l[3];
+      face_data(m.halfedge(f), hs, cs, l);
+      for(int i = 0; i < 3; ++i) if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3])) return true;
+      if(geo == Background_geometry::SPHERICAL && !(l[0] + l[1] + l[2] < 2 * CGAL_PI)) return true;
+    }
+    return false;
+  }
+
   double total_area() const
   {
     double a = 0;
@@ -228,7 +240,9 @@ public:
       face_data(m.halfedge(f), hs, cs, l);
       bool degenerate = false;
       for(int i = 0; i < 3; ++i) { th[i] = angle[hs[i]]; if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3])) degenerate = true; }
-      if(degenerate) continue;
+      // a degenerate triangle contributes explicit zeros: the sparsity pattern depends only on the connectivity
+      // (the symbolic analysis is reused until a flip changes it)
+      if(degenerate) { for(int i = 0; i < 3; ++i) for(int a = 0; a < 3; ++a) t.emplace_back(int(cs[i]), int(cs[a]), 0.0); continue; }
       triangle_angle_derivatives(geo, l, th, dth);
       // dl[j][a]: d l_j / d u at corner a (edge j joins corners j+1 = source(h_j)... see face_data)
       double dl[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -242,14 +256,14 @@ public:
         for(int a = 0; a < 3; ++a) {
           double d = 0;
           for(int j = 0; j < 3; ++j) d += dth[i][j] * dl[j][a];
-          if(d != 0) t.emplace_back(int(cs[i]), int(cs[a]), -d);
+          t.emplace_back(int(cs[i]), int(cs[a]), -d);
         }
     }
   }
 };
 
 } // namespace internal
-} // namespace Ricci_flow
+} // namespace Discrete_Ricci_flow
 } // namespace CGAL
 
 #endif // CGAL_DISCRETE_RICCI_FLOW_INTERNAL_FLOW_ENGINE_H

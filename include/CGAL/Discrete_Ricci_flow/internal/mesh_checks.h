@@ -1,26 +1,50 @@
 // Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Validation of user meshes for the discrete Ricci flow: every failure is reported as a Ricci_flow_error
-// (also in release builds).
+// Validation of user meshes for the discrete Ricci flow: every failure throws CGAL::Invalid_mesh_error (also
+// in release builds). The checks run in a fixed order so that the message names the first problem: empty,
+// invalid, several connected components, not triangulated, non-manifold; the entry points then check
+// closedness and genus.
 #ifndef CGAL_DISCRETE_RICCI_FLOW_INTERNAL_MESH_CHECKS_H
 #define CGAL_DISCRETE_RICCI_FLOW_INTERNAL_MESH_CHECKS_H
 
 #include <CGAL/Discrete_Ricci_flow/flow_types.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
-#include <boost/pending/disjoint_sets.hpp>
-
+#include <numeric>
 #include <sstream>
 #include <vector>
 
 namespace CGAL {
-namespace Ricci_flow {
+namespace Discrete_Ricci_flow {
 namespace internal {
 
-/// Topology of a Surface_mesh: connected components, boundary loops, Euler characteristic, genus.
+/// A union-find on 0 .. n-1 with path halving (no property maps: Boost's disjoint_sets on raw pointers
+/// relies on an unqualified `get` that other CGAL headers can hide).
+class Union_find
+{
+public:
+  explicit Union_find(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t(0)); }
+  std::size_t find(std::size_t x)
+  {
+    while(parent_[x] != x) { parent_[x] = parent_[parent_[x]]; x = parent_[x]; }
+    return x;
+  }
+  /// false if already in the same set
+  bool unite(std::size_t a, std::size_t b)
+  {
+    a = find(a); b = find(b);
+    if(a == b) return false;
+    parent_[a] = b;
+    return true;
+  }
+private:
+  std::vector<std::size_t> parent_;
+};
+
+/// Topology of a mesh: connected components, boundary loops, Euler characteristic, genus.
 struct Mesh_topology
 {
   std::size_t components = 0, boundary_loops = 0;
@@ -29,59 +53,118 @@ struct Mesh_topology
   bool closed() const { return boundary_loops == 0; }
 };
 
-template <class Mesh>
-Mesh_topology mesh_topology(const Mesh& m)
+/// components (through the edges), boundary loops, chi and genus of a FaceGraph; `vim` maps the vertices to
+/// 0 .. n-1
+template <class FaceGraph, class VertexIndexMap>
+Mesh_topology mesh_topology(const FaceGraph& g, VertexIndexMap vim)
 {
-  typedef typename Mesh::Vertex_index V;
+  typedef typename boost::graph_traits<FaceGraph>::halfedge_descriptor halfedge_descriptor;
   Mesh_topology t;
-  const std::size_t nv = m.number_of_vertices();
-  std::vector<std::size_t> rank(nv, 0), parent(nv);
-  boost::disjoint_sets<std::size_t*, std::size_t*> ds(rank.data(), parent.data());
-  for(V v : m.vertices()) ds.make_set(std::size_t(v));
-  for(auto e : m.edges()) ds.union_set(std::size_t(m.vertex(e, 0)), std::size_t(m.vertex(e, 1)));
-  for(V v : m.vertices()) if(ds.find_set(std::size_t(v)) == std::size_t(v)) ++t.components;
-  std::vector<char> seen(m.number_of_halfedges(), 0);
-  for(auto h : m.halfedges()) {
-    if(!m.is_border(h) || seen[h]) continue;
-    ++t.boundary_loops;
-    for(auto g : CGAL::halfedges_around_face(h, m)) seen[g] = 1;
+  const std::size_t nv = vertices(g).size();
+  Union_find uf(nv);
+  for(auto e : edges(g)) {
+    const std::size_t a = get(vim, source(e, g)), b = get(vim, target(e, g));
+    if(a >= nv || b >= nv) throw_option_error("invalid vertex index map");
+    uf.unite(a, b);
   }
-  t.euler_characteristic = long(nv) - long(m.number_of_edges()) + long(m.number_of_faces());
+  for(auto v : vertices(g)) if(uf.find(get(vim, v)) == get(vim, v)) ++t.components;
+  const auto him = CGAL::get_initialized_halfedge_index_map(g);
+  std::vector<char> seen(halfedges(g).size(), 0);
+  for(halfedge_descriptor h : halfedges(g)) {
+    if(!is_border(h, g) || seen[get(him, h)]) continue;
+    ++t.boundary_loops;
+    std::size_t guard = 0;
+    for(halfedge_descriptor k : CGAL::halfedges_around_face(h, g)) {
+      seen[get(him, k)] = 1;
+      if(++guard > halfedges(g).size()) throw_mesh_error("the mesh is not a valid polygon mesh");
+    }
+  }
+  t.euler_characteristic = long(nv) - long(edges(g).size()) + long(faces(g).size());
   t.genus = (2 - t.euler_characteristic - long(t.boundary_loops)) / 2;
   return t;
 }
 
-/// Throws unless `tm` is a pure, manifold triangle mesh (a FaceGraph can only represent manifold edges;
-/// non-manifold vertices, i.e. several umbrellas at one vertex, are detected here).
-template <class TriangleMesh>
-void check_triangle_mesh(const TriangleMesh& tm)
+/// the message for a mesh of several components (checked before anything that depends on the topology)
+inline std::string components_message(std::size_t n)
 {
-  if(faces(tm).size() == 0) throw Ricci_flow_error("the mesh has no face");
-  if(!CGAL::is_triangle_mesh(tm)) throw Ricci_flow_error("the mesh is not a pure triangle mesh");
-  if(!CGAL::is_valid_polygon_mesh(tm)) throw Ricci_flow_error("the mesh is not a valid polygon mesh");
+  std::ostringstream os;
+  os << "the mesh has " << n << " connected components (one is needed; process each component separately, "
+     << "e.g. after CGAL::Polygon_mesh_processing::split_connected_components())";
+  return os.str();
+}
+
+/// Throws `CGAL::Invalid_mesh_error` unless `tm` is a non-empty, valid, connected, pure triangle, manifold
+/// mesh (a FaceGraph can only represent manifold edges; non-manifold vertices, i.e. several umbrellas at one
+/// vertex, are detected here). Returns its topology.
+template <class TriangleMesh, class VertexIndexMap>
+Mesh_topology check_triangle_mesh(const TriangleMesh& tm, VertexIndexMap vim)
+{
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  // each vertex must have a single umbrella: the number of incoming halfedges equals the size of the cycle
-  // around halfedge(v)
-  std::size_t incoming = 0, around = 0;
-  for(halfedge_descriptor h : halfedges(tm)) { (void)h; ++incoming; }
-  for(vertex_descriptor v : vertices(tm)) {
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  if(faces(tm).size() == 0) throw_mesh_error("the mesh has no face");
+  if(!CGAL::is_valid_polygon_mesh(tm)) throw_mesh_error("the mesh is not a valid polygon mesh");
+  for(vertex_descriptor v : vertices(tm))
     if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
-      throw Ricci_flow_error("the mesh has an isolated vertex");
-    // a manifold vertex has at most one border halfedge entering it; several umbrellas joined through the
-    // border (a "bow tie") have more
+      throw_mesh_error("the mesh has an isolated vertex");
+  const Mesh_topology topo = mesh_topology(tm, vim);
+  if(topo.components != 1) throw_mesh_error(components_message(topo.components));
+  if(!CGAL::is_triangle_mesh(tm)) {
+    std::size_t degree = 3;
+    for(face_descriptor f : faces(tm)) {
+      const std::size_t d = CGAL::halfedges_around_face(halfedge(f, tm), tm).size();
+      if(d != 3) { degree = d; break; }
+    }
+    std::ostringstream os;
+    os << "the mesh is not a pure triangle mesh (it has a face of degree " << degree
+       << "); triangulate it first with CGAL::Polygon_mesh_processing::triangulate_faces()";
+    throw_mesh_error(os.str());
+  }
+  // each vertex must have a single umbrella: the number of incoming halfedges equals the size of the cycle
+  // around halfedge(v); a manifold vertex has at most one border halfedge entering it (a "bow tie" has more)
+  std::size_t incoming = halfedges(tm).size(), around = 0;
+  for(vertex_descriptor v : vertices(tm)) {
     std::size_t border_in = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm)) {
       ++around;
       if(CGAL::is_border(h, tm)) ++border_in;
     }
-    if(border_in > 1) throw Ricci_flow_error("the mesh has a non-manifold vertex");
+    if(border_in > 1) throw_mesh_error("the mesh has a non-manifold vertex");
   }
-  if(around != incoming) throw Ricci_flow_error("the mesh has a non-manifold vertex");
+  if(around != incoming) throw_mesh_error("the mesh has a non-manifold vertex");
+  return topo;
+}
+
+/// the same with the mesh's own (or an initialized) vertex index map
+template <class TriangleMesh>
+Mesh_topology check_triangle_mesh(const TriangleMesh& tm)
+{
+  return check_triangle_mesh(tm, CGAL::get_initialized_vertex_index_map(tm));
+}
+
+/// checks for the closed-surface entry points: a valid mesh (see above), closed, of a genus accepted by
+/// `genus_ok`; `what` names the entry point and `needs` the accepted genus in the messages
+template <class TriangleMesh, class GenusOk>
+Mesh_topology check_closed_surface(const TriangleMesh& tm, const std::string& what, const std::string& needs,
+                                   GenusOk genus_ok)
+{
+  const Mesh_topology t = check_triangle_mesh(tm);
+  if(!t.closed()) {
+    std::ostringstream os;
+    os << what << " needs a closed surface (this mesh has " << t.boundary_loops << " boundary loop"
+       << (t.boundary_loops > 1 ? "s" : "") << ")";
+    throw_mesh_error(os.str());
+  }
+  if(!genus_ok(t.genus)) {
+    std::ostringstream os;
+    os << what << " needs " << needs << " (this surface has genus " << t.genus << ")";
+    throw_mesh_error(os.str());
+  }
+  return t;
 }
 
 } // namespace internal
-} // namespace Ricci_flow
+} // namespace Discrete_Ricci_flow
 } // namespace CGAL
 
 #endif // CGAL_DISCRETE_RICCI_FLOW_INTERNAL_MESH_CHECKS_H

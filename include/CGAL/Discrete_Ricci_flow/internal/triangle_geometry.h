@@ -14,7 +14,7 @@
 #include <cmath>
 
 namespace CGAL {
-namespace Ricci_flow {
+namespace Discrete_Ricci_flow {
 namespace internal {
 
 inline double clamp_cos(double c) { return c < -1.0 ? -1.0 : (c > 1.0 ? 1.0 : c); }
@@ -210,7 +210,7 @@ inline double circle_packing_length(Background_geometry geo, double ri, double r
 }
 
 } // namespace internal
-} // namespace Ricci_flow
+} // namespace Discrete_Ricci_flow
 } // namespace CGAL
 
 #endif // CGAL_DISCRETE_RICCI_FLOW_INTERNAL_TRIANGLE_GEOMETRY_H

@@ -1,0 +1,406 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Spherical uniformization of closed genus-0 meshes: the Euclidean flow (vertex scaling with Ptolemy flips) on
+// the mesh punctured at a vertex p, with the Dirichlet condition that puts p at infinity, the layout of the
+// flat disk, the inverse stereographic projection (p goes to the north pole) and the Moebius normalization
+// that puts the centre of mass of the vertices at the origin.
+#ifndef CGAL_DISCRETE_RICCI_FLOW_SPHERICAL_UNIFORMIZATION_H
+#define CGAL_DISCRETE_RICCI_FLOW_SPHERICAL_UNIFORMIZATION_H
+
+#include <CGAL/Discrete_Ricci_flow/compute_metric.h>
+#include <CGAL/Discrete_Ricci_flow/internal/embedding_motions.h>
+
+#include <array>
+#include <cmath>
+#include <deque>
+#include <map>
+#include <set>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Discrete_Ricci_flow {
+
+/*!
+  \ingroup PkgDiscreteRicciFlowRef
+  The result of `spherical_uniformization()`: the vertices on the unit sphere and the spherical metric.
+
+  `metric()` is a `Discrete_metric` with the spherical background on the *spherical Delaunay triangulation* of
+  the points (the convex hull of `sphere_points()`: the flow's intrinsic triangulation of the punctured disk
+  plus the triangles at the puncture vertex), with the spherical geodesic lengths 2 asin(|X_i - X_j| / 2); its
+  vertex i is vertex i of the input. Its statistics are those of the Euclidean flow of the punctured disk.
+  The map is discretely conformal in the sense of Bobenko-Pinkall-Springborn: the chord lengths of the
+  inscribed polyhedron are a vertex scaling of the input lengths (after Ptolemy flips).
+*/
+template <class Point_3>
+class Spherical_map
+{
+public:
+  typedef Discrete_metric<Point_3> Metric;
+  typedef typename Metric::Mesh Mesh;
+
+  /// the spherical metric (see the class description)
+  const Metric& metric() const { return metric_; }
+  /// the position of input vertex i on the unit sphere
+  const std::vector<Point_3>& sphere_points() const { return points_; }
+  /// the vertex sent to the north pole before the normalization
+  std::size_t puncture_vertex() const { return puncture_; }
+  /// true if the flow converged and the result is a valid map: no flipped face (`number_of_flipped_faces()`)
+  /// and the centre of mass at the origin (below 1e-10)
+  bool converged() const { return metric_.converged() && flipped_ == 0 && center_norm_ < 1e-10; }
+  const Flow_statistics& statistics() const { return metric_.statistics(); }
+  /// iterations of the Moebius normalization and the norm of the centre of mass it reached
+  int normalization_iterations() const { return normalization_iterations_; }
+  double center_of_mass_norm() const { return center_norm_; }
+
+  /// the number of faces of `metric().intrinsic_mesh()` whose three points are clockwise seen from outside
+  /// the sphere (0 for a map that preserves the orientation)
+  std::size_t number_of_flipped_faces() const
+  {
+    std::size_t n = 0;
+    const Mesh& m = metric_.intrinsic_mesh();
+    for(auto f : m.faces()) {
+      const auto h = m.halfedge(f);
+      const Point_3 &a = points_[m.source(h)], &b = points_[m.target(h)], &c = points_[m.target(m.next(h))];
+      if(!(CGAL::to_double(CGAL::determinant(a - CGAL::ORIGIN, b - CGAL::ORIGIN, c - CGAL::ORIGIN)) > 0)) ++n;
+    }
+    return n;
+  }
+
+private:
+  template <class TM, class NP> friend Spherical_map<typename boost::property_traits<
+    typename CGAL::GetVertexPointMap<TM, NP>::const_type>::value_type> spherical_uniformization(const TM&, const NP&);
+  Metric metric_;
+  std::vector<Point_3> points_;
+  std::size_t puncture_ = 0;
+  int normalization_iterations_ = 0;
+  double center_norm_ = 0;
+  std::size_t flipped_ = 0;
+};
+
+namespace internal {
+
+typedef std::array<double, 3> Vec3;
+
+/// the disk: a copy of the sphere triangulation `m` without the star of p (Euler operations, so loops and
+/// multi-edges of an intrinsic triangulation are fine); the properties "v:orig" and "e:lambda" follow
+template <class Mesh>
+Mesh punctured_disk(const Mesh& m, typename Mesh::Vertex_index p)
+{
+  Mesh disk = m;
+  const auto h = disk.halfedge(p); // target(h) == p
+  if(h == Mesh::null_halfedge()) throw_mesh_error("spherical uniformization: isolated puncture vertex");
+  std::set<typename Mesh::Vertex_index> link;
+  std::size_t degree = 0;
+  for(auto g : CGAL::halfedges_around_target(p, disk)) {
+    ++degree;
+    if(disk.source(g) == p || !link.insert(disk.source(g)).second)
+      throw_numerical_error("spherical uniformization: the star of the puncture vertex is not a disk");
+  }
+  if(degree < 3) throw_numerical_error("spherical uniformization: the puncture vertex has degree < 3");
+  const auto merged = CGAL::Euler::remove_center_vertex(h, disk);
+  CGAL::Euler::make_hole(merged, disk);
+  disk.collect_garbage();
+  return disk;
+}
+
+/// the sphere triangulation: the disk with the star of a new vertex (original index `p_orig`) filling its
+/// hole; the edges to it get the Penner coordinates `star` (by the original index of the link vertex)
+template <class Mesh>
+typename Mesh::Vertex_index close_disk(Mesh& s, std::size_t p_orig, const std::map<std::size_t, double>& star)
+{
+  auto orig = s.template property_map<typename Mesh::Vertex_index, std::size_t>("v:orig").first;
+  auto lam = s.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
+  typename Mesh::Halfedge_index b = Mesh::null_halfedge();
+  for(auto h : s.halfedges()) if(s.is_border(h)) { b = h; break; }
+  CGAL::Euler::fill_hole(b, s);
+  const auto c = s.target(CGAL::Euler::add_center_vertex(b, s));
+  orig[c] = p_orig;
+  for(auto h : CGAL::halfedges_around_source(c, s)) {
+    const auto it = star.find(orig[s.target(h)]);
+    if(it == star.end()) throw_numerical_error("spherical uniformization: lost an edge of the puncture vertex");
+    lam[s.edge(h)] = it->second;
+  }
+  return c;
+}
+
+/// positions of the disk's vertices in the plane from its flat metric (face by face, Euclidean charts)
+template <class Point_3>
+std::vector<Cplx> layout_flat_disk(const Flow_engine<Point_3>& eng)
+{
+  const auto& m = eng.m;
+  typedef typename CGAL::Surface_mesh<Point_3>::Face_index F;
+  std::vector<Cplx> pos(m.number_of_vertices());
+  std::vector<char> placed_f(m.number_of_faces(), 0), placed_v(m.number_of_vertices(), 0);
+  std::vector<Motion> place(m.number_of_faces(), Motion::identity(false));
+  auto chart = [&](F f) { const auto h = m.halfedge(f); return euclidean_chart(eng.len[m.edge(h)], eng.len[m.edge(m.next(h))], eng.len[m.edge(m.prev(h))]); };
+  const F f0 = *m.faces().begin();
+  placed_f[f0] = 1;
+  std::deque<F> queue(1, f0);
+  while(!queue.empty()) {
+    const F f = queue.front(); queue.pop_front();
+    const auto h0 = m.halfedge(f);
+    const auto hs = std::array<typename CGAL::Surface_mesh<Point_3>::Halfedge_index, 3>{h0, m.next(h0), m.prev(h0)};
+    const std::array<Cplx, 3> z = chart(f);
+    for(int i = 0; i < 3; ++i)
+      if(!placed_v[m.source(hs[i])]) { placed_v[m.source(hs[i])] = 1; pos[m.source(hs[i])] = place[f](z[i]); }
+    for(int i = 0; i < 3; ++i) {
+      const auto o = m.opposite(hs[i]);
+      if(m.is_border(o)) continue;
+      const F g = m.face(o);
+      if(placed_f[g]) continue;
+      const std::array<Cplx, 3> zg = chart(g);
+      const int io = o == m.halfedge(g) ? 0 : (o == m.next(m.halfedge(g)) ? 1 : 2);
+      // the chart of g placed so that its edge o matches the placed edge hs[i] (source(hs[i]) = target(o))
+      place[g] = euclidean_from_pairs(zg[(io + 1) % 3], zg[io], place[f](z[i]), place[f](z[(i + 1) % 3]));
+      placed_f[g] = 1;
+      queue.push_back(g);
+    }
+  }
+  return pos;
+}
+
+/// the Moebius transformation of the unit sphere along the unit axis d with parameter beta in (-1, 1)
+/// (a boost of the light cone: points move away from d for beta > 0)
+inline Vec3 boost(const Vec3& x, const Vec3& d, double beta)
+{
+  const double z = x[0] * d[0] + x[1] * d[1] + x[2] * d[2];
+  const double den = 1 - beta * z, s = std::sqrt(1 - beta * beta) / den;
+  const double zn = (z - beta) / den;
+  Vec3 r;
+  for(int k = 0; k < 3; ++k) r[k] = (x[k] - z * d[k]) * s + zn * d[k];
+  const double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  for(int k = 0; k < 3; ++k) r[k] /= n;
+  return r;
+}
+
+/// moves the centre of mass of the points to the origin by boosts (damped quasi-Newton steps on the
+/// conformal barycentre, Douady-Earle); returns the iterations, `residual` the final |centre|
+inline int moebius_normalize(std::vector<Vec3>& x, double& residual)
+{
+  const int max_iterations = 1000;
+  for(int it = 0; it < max_iterations; ++it) {
+    Vec3 mu = {0, 0, 0};
+    for(const Vec3& p : x) for(int k = 0; k < 3; ++k) mu[k] += p[k] / double(x.size());
+    residual = std::sqrt(mu[0] * mu[0] + mu[1] * mu[1] + mu[2] * mu[2]);
+    if(residual < 1e-13) return it;
+    const Vec3 d = {mu[0] / residual, mu[1] / residual, mu[2] / residual};
+    double spread = 0;
+    for(const Vec3& p : x) { const double z = p[0] * d[0] + p[1] * d[1] + p[2] * d[2]; spread += (1 - z * z) / double(x.size()); }
+    const double beta = (std::min)(residual / (std::max)(spread, 1e-3), 0.5);
+    for(Vec3& p : x) p = boost(p, d, beta);
+  }
+  throw_numerical_error("spherical uniformization: the Moebius normalization did not converge");
+}
+
+/// adds the statistics of one round of the disk flow
+inline void accumulate(Flow_statistics& st, const Flow_statistics& rs)
+{
+  st.iterations += rs.iterations; st.polishing_iterations += rs.polishing_iterations;
+  st.number_of_factorizations += rs.number_of_factorizations; st.factorization_seconds += rs.factorization_seconds;
+  st.number_of_symbolic_factorizations += rs.number_of_symbolic_factorizations;
+  st.number_of_flips += rs.number_of_flips;
+  st.status = rs.status; st.max_curvature_error = rs.max_curvature_error;
+  st.error_history.insert(st.error_history.end(), rs.error_history.begin(), rs.error_history.end());
+}
+
+/// the edges at p of the sphere `s` (p = `c`) that violate the Delaunay condition at the disk's solution: an
+/// edge p-j when the disk's angle sum at j exceeds pi (the boundary polygon is not convex at j), a link edge
+/// j-k when its triangle in the disk is degenerate (its apex lies on j-k)
+template <class Point_3>
+std::vector<typename CGAL::Surface_mesh<Point_3>::Edge_index>
+delaunay_violations_at_puncture(const Flow_engine<Point_3>& eng, const CGAL::Surface_mesh<Point_3>& s,
+                                typename CGAL::Surface_mesh<Point_3>::Vertex_index c)
+{
+  const auto& disk = eng.m;
+  std::vector<typename CGAL::Surface_mesh<Point_3>::Edge_index> r;
+  // s is the disk plus the star of c: the disk's vertices and edges keep their indices in s
+  for(auto h : CGAL::halfedges_around_source(c, s)) {
+    const auto j = s.target(h);
+    double sum = 0;
+    for(auto g : CGAL::halfedges_around_target(j, disk)) if(!disk.is_border(g)) sum += eng.angle[disk.prev(g)];
+    if(sum > CGAL_PI * (1 + 1e-12)) r.push_back(s.edge(h));
+  }
+  for(auto h : disk.halfedges())
+    if(disk.is_border(h) && eng.angle[disk.opposite(h)] >= CGAL_PI * (1 - 1e-12)) r.push_back(s.edge(h));
+  return r;
+}
+
+/// The flow of the punctured disk with the Dirichlet condition at the link of p, repeated after Ptolemy flips
+/// of the sphere's edges at p where the solution violates the Delaunay condition (at most 30 rounds, each with
+/// the Newton iteration bound). `m`
+/// (properties "v:orig", "e:lambda": Penner coordinates) is the sphere triangulation, updated; `disk` and
+/// `eng` receive the last disk and its flow. Returns the puncture vertex of the final `m`.
+template <class Point_3>
+typename CGAL::Surface_mesh<Point_3>::Vertex_index
+sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>::Vertex_index p,
+            const Newton_options& options, CGAL::Surface_mesh<Point_3>& disk,
+            std::unique_ptr<Flow_engine<Point_3> >& eng, Flow_statistics& st)
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  const int max_rounds = 30;
+  for(int round = 0; ; ++round) {
+    auto orig = m.template property_map<typename Mesh::Vertex_index, std::size_t>("v:orig").first;
+    auto lam = m.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
+    std::map<std::size_t, double> star; // original index of a link vertex -> lambda of its edge to p
+    double mean_log = 0;
+    for(auto h : CGAL::halfedges_around_source(p, m)) { star[orig[m.target(h)]] = lam[m.edge(h)]; mean_log += std::log(lam[m.edge(h)]); }
+    mean_log /= double(star.size());
+    const std::size_t p_orig = orig[p];
+    disk = punctured_disk(m, p);
+    auto dorig = disk.template property_map<typename Mesh::Vertex_index, std::size_t>("v:orig").first;
+    auto dlam = disk.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
+    eng.reset(new Flow_engine<Point_3>(disk, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true));
+    for(auto e : disk.edges()) eng->edge_data[e] = dlam[e];
+    Newton_options o = options;
+    o.max_iterations = options.max_iterations - st.iterations; // the iteration bound is for all rounds together
+    o.fixed.assign(disk.number_of_vertices(), 0);
+    o.fixed_in_error = false;
+    for(auto v : disk.vertices())
+      if(disk.is_border(v)) { o.fixed[v] = 1; eng->u[v] = -2 * (std::log(star.at(dorig[v])) - mean_log); }
+    Flow_statistics rs;
+    Newton_solver<Point_3>(*eng, o, rs).run();
+    accumulate(st, rs);
+    // the sphere after the disk's flips: the disk's (intrinsic) triangulation and the star of p
+    Mesh s = disk;
+    auto slam = s.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
+    for(auto e : s.edges()) slam[e] = eng->edge_data[e];
+    const auto c = close_disk(s, p_orig, star);
+    const std::vector<typename Mesh::Edge_index> bad = delaunay_violations_at_puncture(*eng, s, c);
+    m = s; p = c;
+    if(bad.empty() || round >= max_rounds || st.iterations >= options.max_iterations) return p;
+    Flow_engine<Point_3> se(m, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
+    auto mlam = m.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
+    for(auto e : m.edges()) se.edge_data[e] = mlam[e];
+    se.compute_lengths(); se.compute_angles();
+    std::size_t done = 0;
+    for(auto e : bad) {
+      const auto h = m.halfedge(e);
+      if(m.face(h) == m.face(m.opposite(h))) continue;
+      if((m.source(h) == p || m.target(h) == p) && m.degree(p) <= 3) continue;
+      se.flip(e); ++done;
+    }
+    for(auto e : m.edges()) mlam[e] = se.edge_data[e];
+    st.number_of_flips += done;
+    if(done == 0) return p;
+  }
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgDiscreteRicciFlowRef
+  Spherical uniformization of a closed genus-0 mesh: a discrete conformal map to the unit sphere.
+
+  Method (Bobenko-Pinkall-Springborn 2015; Springborn 2020; Gillespie-Springborn-Crane 2021): the star of the
+  puncture vertex p is removed; on the remaining disk the Euclidean vertex-scaling flow with Ptolemy flips
+  solves K = 0 at the interior vertices with the Dirichlet condition u_j = -2 log l_pj (+ const) at the link of
+  p, which is the condition that p lies at infinity (the Penner coordinates of the edges to p). The energy is
+  strictly convex with Ptolemy flips (its minimum exists for every triangulated sphere, Springborn 2020), so
+  Newton with line search converges. The flat disk is laid out, mapped to the sphere by inverse stereographic
+  projection (p at the north pole) and normalized by a Moebius transformation that puts the centre of mass of
+  the vertices at the origin.
+
+  \param tm a closed connected genus-0 triangle mesh (`FaceListGraph`)
+  \param np named parameters: `puncture_vertex(i)` (default a vertex of largest degree), `vertex_point_map`,
+         `vertex_index_map`, `input_edge_length_map`, `number_of_iterations`, `accuracy`, `sparse_solver`,
+         `verbose`, `callback` (as `compute_metric()`). Zero-area faces are flipped away first.
+  \throws CGAL::Invalid_mesh_error unless `tm` is a closed connected genus-0 triangle mesh;
+          CGAL::Numerical_error if the normalization fails. Non-convergence of the flow is a status.
+*/
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Spherical_map<typename boost::property_traits<typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>
+spherical_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  typedef typename boost::property_traits<VPM>::value_type Point_3;
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  typedef typename Mesh::Vertex_index V;
+  const auto t0 = std::chrono::steady_clock::now();
+  internal::check_closed_surface(tm, "spherical uniformization", "genus 0", [](long g) { return g == 0; });
+  VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  internal::Newton_options o = internal::newton_options(np);
+  Mesh m;
+  std::vector<V> vmap;
+  internal::copy_connectivity(tm, vpm, vim, m, vmap);
+  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor, typename Mesh::Edge_index> > corr;
+  std::vector<double> len = internal::input_lengths(tm, vpm, vim, get_parameter(np, CGAL::internal_np::ricci_edge_length_map_t_v), m, vmap, corr);
+  double area = 0; std::string msg;
+  std::size_t initial_flips = 0;
+  if(internal::degenerate_face(m, len, area, msg) != Mesh::null_face()) {
+    initial_flips = internal::geometric_delaunay_flips(m, len).flips.size();
+    if(internal::degenerate_face(m, len, area, msg) != Mesh::null_face())
+      internal::throw_metric_error(msg + " after the intrinsic Delaunay flips of the input");
+  }
+  // the puncture vertex
+  std::size_t p = choose_parameter(get_parameter(np, CGAL::internal_np::ricci_puncture_vertex_t_v), std::size_t(-1));
+  if(p == std::size_t(-1)) {
+    std::size_t best = 0; p = 0;
+    for(V v : m.vertices()) if(m.degree(v) > best) { best = m.degree(v); p = v; }
+  } else if(p >= m.number_of_vertices()) internal::throw_option_error("puncture_vertex: no such vertex");
+  const V pv(static_cast<typename V::size_type>(p));
+  auto orig = m.template add_property_map<V, std::size_t>("v:orig", 0).first;
+  auto lam = m.template add_property_map<typename Mesh::Edge_index, double>("e:lambda", 0.0).first;
+  for(V v : m.vertices()) orig[v] = std::size_t(v);
+  for(auto e : m.edges()) lam[e] = 0.5 * len[e];
+  const std::size_t nv = m.number_of_vertices();
+
+  Spherical_map<Point_3> res;
+  Flow_statistics& st = internal::Metric_access::statistics(res.metric_);
+  Mesh disk;
+  std::unique_ptr<internal::Flow_engine<Point_3> > eng;
+  const V pc = internal::sphere_flow(m, pv, o, disk, eng, st);
+  st.number_of_initial_flips = initial_flips;
+  auto dorig = disk.template property_map<V, std::size_t>("v:orig").first;
+  auto morig = m.template property_map<V, std::size_t>("v:orig").first;
+
+  // layout, inverse stereographic projection (the mirror image: the projection reverses the orientation),
+  // Moebius normalization
+  std::vector<internal::Cplx> w = internal::layout_flat_disk(*eng);
+  internal::Cplx c(0); internal::Real r = 0;
+  std::size_t nlink = 0;
+  for(auto v : disk.vertices()) if(disk.is_border(v)) { c += w[v]; ++nlink; }
+  c /= internal::Real(nlink);
+  for(auto v : disk.vertices()) if(disk.is_border(v)) r += std::abs(w[v] - c) / internal::Real(nlink);
+  std::vector<internal::Vec3> x(nv, internal::Vec3{0, 0, 1});
+  for(auto v : disk.vertices()) {
+    const internal::Cplx z = std::conj((w[v] - c) / r);
+    const internal::Real n2 = std::norm(z);
+    x[dorig[v]] = internal::Vec3{double(2 * z.real() / (n2 + 1)), double(2 * z.imag() / (n2 + 1)), double((n2 - 1) / (n2 + 1))};
+  }
+  for(const auto& q : x) if(!(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])))
+    internal::throw_numerical_error("spherical uniformization: non-finite layout (the flow did not converge)");
+  res.normalization_iterations_ = internal::moebius_normalize(x, res.center_norm_);
+  for(const auto& q : x) res.points_.push_back(Point_3(q[0], q[1], q[2]));
+  res.puncture_ = morig[pc];
+
+  // the spherical Delaunay triangulation: the final sphere triangulation, vertices in the input's order
+  Mesh& sm = internal::Metric_access::mesh(res.metric_);
+  for(std::size_t i = 0; i < nv; ++i) sm.add_vertex(res.points_[i]);
+  for(auto f : m.faces()) {
+    const auto h = m.halfedge(f);
+    if(sm.add_face(V(typename V::size_type(morig[m.source(h)])), V(typename V::size_type(morig[m.target(h)])),
+                   V(typename V::size_type(morig[m.target(m.next(h))]))) == Mesh::null_face())
+      internal::throw_numerical_error("spherical uniformization: the final triangulation is not simplicial (the flow did not converge)");
+  }
+  auto& lengths = internal::Metric_access::add_lengths(res.metric_);
+  for(auto e : sm.edges()) {
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(res.points_[sm.vertex(e, 0)], res.points_[sm.vertex(e, 1)])));
+    lengths[e] = 2 * std::asin((std::min)(1.0, d / 2));
+  }
+  internal::Metric_access::set(res.metric_, Background_geometry::SPHERICAL, std::vector<double>(),
+                               std::vector<double>(m.number_of_vertices(), 0.0), 0, false);
+  res.flipped_ = res.number_of_flipped_faces();
+  st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+} // namespace Discrete_Ricci_flow
+} // namespace CGAL
+
+#endif // CGAL_DISCRETE_RICCI_FLOW_SPHERICAL_UNIFORMIZATION_H

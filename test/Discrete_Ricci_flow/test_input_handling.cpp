@@ -1,0 +1,126 @@
+// Tests of the Discrete_Ricci_flow package, part 2: the PMP headers are included FIRST (issue 11: with
+// <CGAL/Polygon_mesh_processing/repair.h> before the package, Boost's disjoint sets on raw pointers did not
+// compile), and the handling of bad or unusual input: the component check comes first with its own message,
+// quad meshes are told to triangulate, a zero-area face is flipped away.
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/Discrete_Ricci_flow.h>
+
+#include "cgal_hc_test.h"
+
+#include <string>
+
+namespace {
+typedef CGAL::Epick K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+namespace RF = CGAL::Discrete_Ricci_flow;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+Mesh read(const std::string& name)
+{
+  Mesh m;
+  const std::string path = std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/" + name;
+  if(!CGAL::IO::read_polygon_mesh(path, m)) throw std::runtime_error("cannot read " + path);
+  return m;
+}
+
+template <class F>
+std::string message_of(F f)
+{
+  try { f(); } catch(const CGAL::Invalid_mesh_error& e) { return e.what(); } catch(const std::exception& e) { return std::string("other exception: ") + e.what(); }
+  return "no exception";
+}
+
+Mesh copies(const Mesh& m, int n)
+{
+  Mesh r;
+  for(int i = 0; i < n; ++i) {
+    Mesh c = m;
+    for(auto v : c.vertices()) c.point(v) = c.point(v) + K::Vector_3(10.0 * i, 0, 0);
+    CGAL::copy_face_graph(c, r);
+  }
+  return r;
+}
+} // namespace
+
+// the PMP headers above come first: this translation unit compiling is the regression test; the calls check
+// that the package still works next to them (and the alias namespace Ricci_flow is the same namespace)
+CGAL_HC_TEST_CASE(include_order_pmp_first)
+{
+  Mesh m = read("eight.off");
+  PMP::remove_isolated_vertices(m);
+  auto r = CGAL::Ricci_flow::hyperbolic_uniformization(m);
+  CGAL_HC_CHECK(r.converged());
+  CGAL_HC_CHECK(std::abs(r.total_area() - 4 * CGAL_PI) < 1e-9);
+  const RF::Hyperbolic_embedding<Point_3> emb(r);
+  CGAL_HC_CHECK(emb.number_of_generators() == 4);
+}
+
+CGAL_HC_TEST_CASE(components_checked_first)
+{
+  // 26 components of genus 2: not "genus -25"
+  const Mesh many = copies(read("eight.off"), 26);
+  std::vector<std::size_t> component(many.number_of_faces());
+  CGAL_HC_CHECK(PMP::connected_components(many, CGAL::make_property_map(component)) == 26);
+  std::string w = message_of([&] { RF::hyperbolic_uniformization(many); });
+  CGAL_HC_CHECK_MSG(w.find("26 connected components") != std::string::npos && w.find("genus") == std::string::npos, w);
+  // two disjoint tori: not "genus 1"
+  Mesh torus = read("pipe.off");
+  const Mesh two = copies(torus, 2);
+  w = message_of([&] { RF::flat_metric(two); });
+  CGAL_HC_CHECK_MSG(w.find("2 connected components") != std::string::npos, w);
+  w = message_of([&] { RF::hyperbolic_uniformization(two); });
+  CGAL_HC_CHECK_MSG(w.find("2 connected components") != std::string::npos, w);
+  std::vector<double> l(two.number_of_edges());
+  CGAL_HC_CHECK_THROWS(RF::compute_metric(two, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0), CGAL::make_property_map(l),
+                                          RF::parameters::background_geometry(RF::Background_geometry::EUCLIDEAN)),
+                       CGAL::Invalid_mesh_error);
+  // the one-component torus gives the genus message for the hyperbolic uniformization
+  w = message_of([&] { RF::hyperbolic_uniformization(torus); });
+  CGAL_HC_CHECK_MSG(w.find("genus 1") != std::string::npos && w.find("genus >= 2") != std::string::npos, w);
+}
+
+CGAL_HC_TEST_CASE(quad_mesh_message)
+{
+  Mesh q = read("cube_quad.off");
+  CGAL_HC_CHECK(!CGAL::is_triangle_mesh(q));
+  const std::string w = message_of([&] { RF::hyperbolic_uniformization(q); });
+  CGAL_HC_CHECK_MSG(w.find("CGAL::Polygon_mesh_processing::triangulate_faces") != std::string::npos, w);
+  // Ricci_flow_error is the shared Invalid_input_error: it catches the mesh errors
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(q), RF::Ricci_flow_error);
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(q), CGAL::Hyperbolic_geometry_error);
+}
+
+CGAL_HC_TEST_CASE(zero_area_face_is_flipped_away)
+{
+  // mpi_triang.off (genus 1) has a face with lengths 6.01607 + 8.03211 = 14.0482 (zero area)
+  Mesh m = read("mpi_triang.off");
+  auto r = RF::flat_metric(m);
+  CGAL_HC_CHECK_MSG(r.converged(), RF::to_string(r.statistics().status));
+  CGAL_HC_CHECK(r.statistics().number_of_initial_flips > 0);
+  CGAL_HC_CHECK(r.statistics().max_curvature_error < 1e-10);
+  const RF::Hyperbolic_embedding<Point_3> emb(r);
+  const auto tau = emb.lattice_parameter();
+  CGAL_HC_CHECK(std::isfinite(tau.real()) && tau.imag() >= std::sqrt(3.0) / 2 - 1e-12 && std::abs(tau.real()) <= 0.5 + 1e-12);
+  std::cout << "  mpi_triang.off: " << r.statistics().number_of_initial_flips << " initial flips, " << r.statistics().iterations
+            << " iterations, tau = " << tau << std::endl;
+}
+
+CGAL_HC_TEST_CASE(options_out_of_range)
+{
+  const Mesh m = read("eight.off");
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(m, CGAL::parameters::accuracy(-1.0)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(m, CGAL::parameters::number_of_iterations(-3)), CGAL::Invalid_option_error);
+  if(!RF::has_cholmod())
+    CGAL_HC_CHECK_THROWS(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::SUPERNODAL_CHOLMOD)),
+                         CGAL::Invalid_option_error);
+  else CGAL_HC_CHECK(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::SUPERNODAL_CHOLMOD)).converged());
+}
