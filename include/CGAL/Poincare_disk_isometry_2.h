@@ -60,9 +60,11 @@ public:
   /// only through the positivity of the determinant; rational (c, s) on the unit circle are exact).
   static Poincare_disk_isometry_2 rotation(const FT& c, const FT& s)
   {
-    // alpha = 1 + e^{i theta} is e^{i theta / 2} times a positive real unless theta = pi.
-    if(c == FT(-1)) return Poincare_disk_isometry_2(FT(0), FT(1), FT(0), FT(0));
-    return Poincare_disk_isometry_2(FT(1) + c, s, FT(0), FT(0));
+    // z -> alpha z / conj(alpha) with arg(alpha) = theta / 2: alpha = 1 + e^{i theta} = 2 cos(theta/2) e^{i theta/2}
+    // for c >= 0, alpha = s + i (1 - c) = 2 sin(theta/2) e^{i theta/2} for c < 0; never 1 + c near theta = pi,
+    // which cancels (a direction 1e-4 rad off the negative axis lost 1e-8 rad). Both are exact on rationals.
+    if(c >= FT(0)) return Poincare_disk_isometry_2(FT(1) + c, s, FT(0), FT(0));
+    return Poincare_disk_isometry_2(s, FT(1) - c, FT(0), FT(0));
   }
 
   const FT& alpha_real() const { return ar_; }

@@ -11,6 +11,7 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <boost/property_map/property_map.hpp>
 
 #include "cgal_hc_test.h"
@@ -350,6 +351,23 @@ CGAL_HC_TEST_CASE(is_delaunay_agrees_with_the_in_circle_test_of_the_lifted_quadr
   CGAL_HC_CHECK_MSG(delaunay > 20 && not_delaunay > 20, delaunay << " Delaunay, " << not_delaunay << " not");
   // the Euclidean rule (opposite angles sum to at most pi) is wrong on some of these quadrilaterals
   CGAL_HC_CHECK_MSG(euclidean_rule_wrong > 0, "the Euclidean rule agreed everywhere: the test does not separate them");
+}
+
+CGAL_HC_TEST_CASE(rotation_isometry_has_no_cancellation_near_a_half_turn)
+{
+  typedef CGAL::Poincare_disk_isometry_2<K> I;
+  for(double t : {0.3, 2.0, CGAL_PI - 1e-4, CGAL_PI - 1e-7, CGAL_PI, -CGAL_PI + 1e-6, -2.5}) {
+    const I r = I::rotation(std::cos(t), std::sin(t));
+    const Point_2 z = r.apply_unchecked(Point_2(0.5, 0));
+    CGAL_HC_CHECK_MSG(dist(z, Point_2(0.5 * std::cos(t), 0.5 * std::sin(t))) < 1e-15, "angle " << t);
+  }
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  typedef CGAL::Poincare_disk_isometry_2<EK> EI;
+  // exact on rationals: the rotation by (3/5, -4/5) and by (-3/5, 4/5) map 1/2 exactly
+  CGAL_HC_CHECK(EI::rotation(EK::FT(3) / 5, EK::FT(-4) / 5).apply_unchecked(EK::Point_2(EK::FT(1) / 2, 0)) ==
+                EK::Point_2(EK::FT(3) / 10, EK::FT(-4) / 10));
+  CGAL_HC_CHECK(EI::rotation(EK::FT(-3) / 5, EK::FT(4) / 5).apply_unchecked(EK::Point_2(EK::FT(1) / 2, 0)) ==
+                EK::Point_2(EK::FT(-3) / 10, EK::FT(4) / 10));
 }
 
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }
