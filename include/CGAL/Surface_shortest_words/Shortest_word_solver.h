@@ -329,7 +329,7 @@ public:
     r.word = reducer_->reduce(r.crossing_word);
     if(opt_.use_geometry && loop.size() > 1) {
       try {
-        Shortest_path_result<TriangleMesh> sp = internal::shortest_path_one_chart(s_, loop, opt_.path_options);
+        Shortest_path_result<TriangleMesh> sp = shortest_homotopic_path(s_, loop, opt_.path_options);
         r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
       } catch(const Precision_error& e) {
         r.used_geometry = false;
