@@ -645,6 +645,7 @@ CGAL_HC_TEST_CASE(ricci_handoff_on_every_demo_mesh)
           const bool ok = res.word.empty() ? cst.is_contractible(p1) : cst.are_base_point_homotopic(p1, p2);
           CGAL_HC_CHECK_MSG(ok, name << " loop of " << hs.size() << " edges, word " << solver.word_to_string(res.word));
           CGAL_HC_CHECK(solver.reduce(res.word) == res.word);
+          CGAL_HC_CHECK_MSG(res.used_geometry, name << ": " << res.geometry_status); // no length limit
           if(res.used_geometry) {
             ++geometric;
             if(solver.reduce(solver.crossing_word(res.loop)) != res.word) ++geometric_differs;
@@ -709,6 +710,7 @@ CGAL_HC_TEST_CASE(issue10_words_along_generators_shortest_and_right)
                             "genus " << g << " generator " << i << " word " << solver->word_to_string(res.word));
           CGAL_HC_CHECK(solver->reduce(res.word) == res.word);
           // diagnostic: the word read from the crossings of the shortest loop (issue 10's elephant case)
+          CGAL_HC_CHECK_MSG(res.used_geometry, res.geometry_status);
           if(res.used_geometry) {
             ++geometric;
             const SSW::Word gw = solver->reduce(solver->crossing_word(res.loop));

@@ -314,8 +314,9 @@ public:
   /// Algorithm 4 with its intermediate results. The word is the geodesic reduction (`geodesic_reduce()`,
   /// shortest by the theorem of Birman and Series) of the exact crossing word of the given loop: it does not
   /// depend on floating point. With `use_geometry`, the shortest loop through p in the class is computed as
-  /// well (`loop`, `length`); when that is impossible (`Precision_error`), `used_geometry` is false and
-  /// `geometry_status` says why.
+  /// well (`loop`, `length`) by `shortest_homotopic_path()`, at any length (chart chaining); only if that
+  /// throws `Precision_error` (a trace lost near a vertex, the round bound exceeded) is `used_geometry` false,
+  /// with `geometry_status` saying why.
   Word_result<TriangleMesh> solve(const Path& loop) const
   {
     if(loop.empty()) throw Invalid_path_error("Shortest_word_solver: empty loop");

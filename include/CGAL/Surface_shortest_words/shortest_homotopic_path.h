@@ -30,8 +30,9 @@ namespace Surface_shortest_words {
 */
 struct Shortest_path_options
 {
-  /// the lifted end point must lie within this hyperbolic distance of the start (double precision keeps
-  /// about 16 digits; at distance d a point of the Poincare disk is known to about 1e-16 e^d)
+  /// radius of one chart: a one-chart computation keeps every lifted point within this hyperbolic distance
+  /// of the chart's origin (double precision keeps about 16 digits; at distance d a point of the Poincare
+  /// disk is known to about 1e-16 e^d); longer paths are chained through charts of this radius
   double max_lift_distance = 25.0;
   /// a crossing closer than this fraction of an edge to a vertex is snapped to the vertex
   double vertex_snap = 1e-9;
