@@ -504,6 +504,15 @@ CGAL_HC_TEST_CASE(ricci_flow_meshes_translation_lengths_and_words)
       CGAL_HC_CHECK_MSG(std::abs(r.length - emb.translation_length(i)) < 1e-6,
                         name << " loop " << i << ": " << r.length << " vs " << emb.translation_length(i));
       CGAL_HC_CHECK(r.length <= s.path_length(loop) + 1e-9);
+      // chart chaining on a Ricci metric: the closed geodesic of loop^200 is the closed geodesic of the
+      // loop run 200 times (hundreds of units, far beyond one chart)
+      if(i == 0) {
+        std::vector<IMesh::Halfedge_index> pw;
+        for(int k = 0; k < 200; ++k) pw.insert(pw.end(), emb.homotopy_basis()[i].begin(), emb.homotopy_basis()[i].end());
+        const auto rp = SSW::shortest_homotopic_loop(s, s.path_from_halfedges(pw));
+        const double ref = 200 * emb.translation_length(i);
+        CGAL_HC_CHECK_MSG(rp.converged && std::abs(rp.length - ref) < 1e-6 * (1 + ref), name << ": loop^200 " << rp.length << " vs " << ref);
+      }
     }
     // words in the computed basis made canonical, checked with CGAL's oracle on the intrinsic triangulation
     ISolver solver(s, emb.base_vertex());
