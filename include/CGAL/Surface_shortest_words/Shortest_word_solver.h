@@ -314,8 +314,9 @@ public:
   /// Algorithm 4 with its intermediate results. The word is the geodesic reduction (`geodesic_reduce()`,
   /// shortest by the theorem of Birman and Series) of the exact crossing word of the given loop: it does not
   /// depend on floating point. With `use_geometry`, the shortest loop through p in the class is computed as
-  /// well (`loop`, `length`); when that is impossible (`Precision_error`), `used_geometry` is false and
-  /// `geometry_status` says why.
+  /// well (`loop`, `length`) by `shortest_homotopic_path()`, at any length (chart chaining); only if that
+  /// throws `Precision_error` (a trace lost near a vertex, the round bound exceeded) is `used_geometry` false,
+  /// with `geometry_status` saying why.
   Word_result<TriangleMesh> solve(const Path& loop) const
   {
     if(loop.empty()) throw Invalid_path_error("Shortest_word_solver: empty loop");
@@ -329,7 +330,7 @@ public:
     r.word = reducer_->reduce(r.crossing_word);
     if(opt_.use_geometry && loop.size() > 1) {
       try {
-        Shortest_path_result<TriangleMesh> sp = internal::shortest_path_one_chart(s_, loop, opt_.path_options);
+        Shortest_path_result<TriangleMesh> sp = shortest_homotopic_path(s_, loop, opt_.path_options);
         r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
       } catch(const Precision_error& e) {
         r.used_geometry = false;

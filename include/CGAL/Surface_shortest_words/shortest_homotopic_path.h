@@ -30,8 +30,9 @@ namespace Surface_shortest_words {
 */
 struct Shortest_path_options
 {
-  /// the lifted end point must lie within this hyperbolic distance of the start (double precision keeps
-  /// about 16 digits; at distance d a point of the Poincare disk is known to about 1e-16 e^d)
+  /// radius of one chart: a one-chart computation keeps every lifted point within this hyperbolic distance
+  /// of the chart's origin (double precision keeps about 16 digits; at distance d a point of the Poincare
+  /// disk is known to about 1e-16 e^d); longer paths are chained through charts of this radius
   double max_lift_distance = 25.0;
   /// a crossing closer than this fraction of an edge to a vertex is snapped to the vertex
   double vertex_snap = 1e-9;
@@ -531,6 +532,71 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
   return stack;
 }
 
+// Chart chaining for paths of any length (Birkhoff curve shortening with fixed end points): the path is
+// first cut into geodesic pieces (`geodesic_pieces()`), then repeatedly re-cut into windows of path length
+// about `window` <= max_lift_distance / 2, each replaced by its shortest homotopic path computed in its own
+// chart (`shortest_path_one_chart()`: every point within `window` of that chart's origin, so double
+// precision suffices whatever the total length). The cut points alternate between two offsets (0 and
+// window / 2), so every cut point of one round lies in the middle of a window of the next and is
+// straightened there. A fixed point is a path that is geodesic on every window containing a cut point,
+// i.e. a geodesic; in negative curvature the corner angles shrink by a factor of about cosh(window / 2)
+// per round, and the length is monotone. Stops after two rounds without relative length change above
+// 1e-12 plus two more rounds (corner angles below about 1e-10), or throws `Precision_error` after
+// `max_rounds` rounds.
+template <class Surface>
+Shortest_path_result<typename Surface::Triangle_mesh>
+shortest_path_chained(const Surface& surface, const typename Surface::Path& path, const Shortest_path_options& options)
+{
+  typedef typename Surface::Path Path;
+  Shortest_path_result<typename Surface::Triangle_mesh> res;
+  std::size_t faces = 0;
+  const std::vector<Path> pieces = geodesic_pieces(surface, path, options, 0.5 * options.max_lift_distance, faces);
+  Path cur = pieces.front();
+  for(std::size_t i = 1; i < pieces.size(); ++i) cur.insert(cur.end(), pieces[i].begin() + 1, pieces[i].end());
+  const double window = (std::min)(10.0, 0.4 * options.max_lift_distance);
+  double prev = std::numeric_limits<double>::infinity();
+  int quiet = 0, extra = 0;
+  // work bound: a spike of excess length E retracts by about window / 2 per round
+  const std::size_t max_rounds = 200 + std::size_t(4 * surface.path_length(cur) / window);
+  std::vector<double> seg;
+  for(std::size_t round = 0;; ++round) {
+    if(round >= max_rounds) {
+      std::ostringstream os;
+      os << "Surface_shortest_words: chart-chained shortening did not converge in " << max_rounds << " rounds";
+      throw Precision_error(os.str());
+    }
+    seg.resize(cur.size() - 1);
+    for(std::size_t i = 0; i + 1 < cur.size(); ++i) seg[i] = surface.path_length(Path{cur[i], cur[i + 1]});
+    Path next;
+    next.reserve(cur.size());
+    next.push_back(cur.front());
+    double len = 0, acc = 0, cut = (round % 2 == 1) ? 0.5 * window : window;
+    std::size_t a = 0;
+    for(std::size_t i = 1; i < cur.size(); ++i) {
+      acc += seg[i - 1];
+      if(acc < cut && i + 1 < cur.size()) continue;
+      const Shortest_path_result<typename Surface::Triangle_mesh> r =
+        shortest_path_one_chart(surface, Path(cur.begin() + std::ptrdiff_t(a), cur.begin() + std::ptrdiff_t(i) + 1), options);
+      next.insert(next.end(), r.path.begin() + 1, r.path.end());
+      len += r.length;
+      faces += r.embedded_faces;
+      a = i;
+      cut = acc + window;
+    }
+    if(next.size() == 1) next.push_back(cur.back());
+    cur.swap(next);
+    res.length = len;
+    if(options.progress) options.progress(faces);
+    if(std::abs(prev - len) <= 1e-12 * (std::max)(1.0, len)) ++quiet; else quiet = 0;
+    prev = len;
+    if(quiet >= 2 && ++extra > 2) break;
+  }
+  res.path = cur;
+  res.lift_distance = res.length;
+  res.embedded_faces = faces;
+  return res;
+}
+
 } // namespace internal
 
 /*!
@@ -545,19 +611,25 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
   geodesic, traced through the faces it crosses, again embedding one face at a time. The result is the unique
   geodesic in the homotopy class (the metric has no cone points).
 
-  Double precision keeps a lifted point accurate to about 1e-16 e^d at distance d: if the lifted path goes
-  farther than `options.max_lift_distance`, the path is cut into short chunks that are shortened separately
-  and merged on a stack (each merge is again a one-chart computation), which removes back-and-forth wandering;
-  if the final geodesic itself is longer than the limit, `Precision_error` is thrown.
+  Double precision keeps a lifted point accurate to about 1e-16 e^d at distance d, so one chart serves
+  only while the lifted path stays within `options.max_lift_distance` of its start. Longer paths (any
+  length) are computed by chart chaining: the path is cut into short chunks shortened separately and merged
+  on a stack (removing back-and-forth wandering), then straightened by windows of path length about
+  min(10, 0.4 max_lift_distance), each computed in its own chart around its own points, with cut points
+  alternating between two offsets until the length is stationary (Birkhoff curve shortening; in negative
+  curvature the corner angles at the cut points shrink by a factor of about cosh(window / 2) per round).
+  No point is ever far from the origin of its chart, whatever the total length (tested beyond 10^4
+  hyperbolic units against quadruple-precision holonomies).
 
   \param surface the hyperbolic surface
   \param path a path on it (consecutive points in a common face); the end points are kept
   \param options numerical parameters and progress callback
   \returns the shortest path (start point, its crossings with edges or vertices, end point) and its length.
   \throws Invalid_path_error if `path` is not a path on the mesh
-  \throws Precision_error if the shortest path is longer than `options.max_lift_distance`
+  \throws Precision_error if a window cannot be traced (the geodesic lost near a vertex) or the chained
+  shortening does not become stationary within its round bound (200 + 4 length / window rounds)
   Cost: O(n + m) time, O(1) extra memory for the embedding, n = faces met by `path`, m = faces crossed by
-  the result (with the chunked fallback: O(n + m * max_lift_distance / edge length)).
+  the result; for paths longer than one chart, O(n + R m) with R rounds (typically 6 to 10).
 */
 template <class Surface>
 Shortest_path_result<typename Surface::Triangle_mesh>
@@ -568,18 +640,8 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
   try {
     return internal::shortest_path_one_chart(surface, path, options);
   } catch(const Precision_error&) {}
-  std::size_t faces = 0;
-  const std::vector<typename Surface::Path> pieces =
-    internal::geodesic_pieces(surface, path, options, 0.5 * options.max_lift_distance, faces);
-  if(pieces.size() == 1) {
-    Shortest_path_result<typename Surface::Triangle_mesh> r = internal::shortest_path_one_chart(surface, pieces.front(), options);
-    r.embedded_faces += faces;
-    return r;
-  }
-  std::ostringstream os;
-  os << "Surface_shortest_words: the shortest path does not fit in one chart of radius max_lift_distance = "
-     << options.max_lift_distance << " (beyond double precision; it is approximated by " << pieces.size() << " geodesic pieces)";
-  throw Precision_error(os.str());
+  // too long for one chart: chart chaining
+  return internal::shortest_path_chained(surface, path, options);
 }
 
 /// \ingroup PkgSurfaceShortestWordsRef
