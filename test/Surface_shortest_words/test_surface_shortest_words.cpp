@@ -508,7 +508,8 @@ CGAL_HC_TEST_CASE(ricci_flow_meshes_translation_lengths_and_words)
       // loop run 200 times (hundreds of units, far beyond one chart)
       if(i == 0) {
         std::vector<IMesh::Halfedge_index> pw;
-        for(int k = 0; k < 200; ++k) pw.insert(pw.end(), emb.homotopy_basis()[i].begin(), emb.homotopy_basis()[i].end());
+        const std::vector<IMesh::Halfedge_index> basis_loop = emb.basis().loop(i); // one object: begin and end of the same range
+        for(int k = 0; k < 200; ++k) pw.insert(pw.end(), basis_loop.begin(), basis_loop.end());
         const auto rp = SSW::shortest_homotopic_loop(s, s.path_from_halfedges(pw));
         const double ref = 200 * emb.translation_length(i);
         CGAL_HC_CHECK_MSG(rp.converged && std::abs(rp.length - ref) < 1e-6 * (1 + ref), name << ": loop^200 " << rp.length << " vs " << ref);
