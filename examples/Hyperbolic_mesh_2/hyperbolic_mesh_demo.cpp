@@ -87,7 +87,8 @@ int main(int argc, char** argv)
       HM::insert_geodesic_pslg(cdt, in.points, in.segments);
       const CGAL::Hyperbolic_mesh_criteria_2<CDT> criteria(35 * pi / 180, eps);
       const HM::Mesh_statistics st = CGAL::refine_hyperbolic_Ruppert_mesh_2(
-          cdt, criteria, HM::parameters<Point>().seeds(in.seeds.begin(), in.seeds.end()));
+          cdt, criteria,
+          HM::parameters::seeds(in.seeds, HM::parameters::maximum_number_of_operations(2e6)));
       std::cout << "Ruppert: " << st << "\n";
       HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Ruppert.svg", criteria.alpha(), 2 * pi / 3,
                                     "generalized Ruppert, alpha = 35 deg, eps = " + std::to_string(eps));
@@ -102,7 +103,7 @@ int main(int argc, char** argv)
       HM::insert_geodesic_pslg(cdt, in.points, in.segments);
       const CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT> criteria(eps);
       const HM::Mesh_statistics st = CGAL::refine_hyperbolic_Chew_mesh_2(
-          cdt, criteria, HM::parameters<Point>().seeds(in.seeds.begin(), in.seeds.end()));
+          cdt, criteria, HM::parameters::seeds(in.seeds));
       std::cout << "Chew:    " << st << "\n";
       const double theta = criteria.minimum_central_angle();
       HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Chew.svg", theta, 2 * pi / 3,

@@ -8,6 +8,7 @@
 #define CGAL_REFINE_HYPERBOLIC_MESH_2_H
 
 #include <CGAL/Hyperbolic_mesh_2/internal/Refiner.h>
+#include <CGAL/Hyperbolic_mesh_2/mesh_named_parameters.h>
 #include <CGAL/Hyperbolic_mesh_2/mesh_types.h>
 #include <CGAL/Hyperbolic_mesh_criteria_2.h>
 
@@ -31,7 +32,10 @@ namespace CGAL {
   circumcenter is rejected and those edges are split. Input angles below pi/2 are lopped (thesis Fig. 3.6): every
   segment at such an apex is split at lfs/3 from it, and poor faces whose shortest edge joins the two segments of
   a small angle are left as they are (`Mesh_statistics::protected_faces`). Optional off-centers
-  (`parameters.off_centers(true)`).
+  (`off_centers(true)`).
+
+  \deprecated This overload takes the options as a `Hyperbolic_mesh_2::Mesh_parameters` struct; prefer the
+  named-parameter overload below (same options, same implementation).
 
   The domain is marked as in `refine_Delaunay_mesh_2` (`parameters.seeds(...)`, `.seeds_are_in_domain(...)`)
   and kept up to date: on return `f->is_in_domain()` is the domain.
@@ -50,11 +54,34 @@ namespace CGAL {
 template <class CDT>
 Hyperbolic_mesh_2::Mesh_statistics
 refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>& criteria,
-                                 const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters =
-                                     Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>())
+                                 const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters)
 {
   Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_mesh_criteria_2<CDT>, false> r(cdt, criteria, parameters);
   return r.run();
+}
+
+/*!
+  \ingroup PkgHyperbolicMesh2Ref
+  Same as above with the options as CGAL named parameters (the preferred form; the `Mesh_parameters` overload
+  is deprecated):
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{CGAL::Hyperbolic_mesh_2::parameters::seeds} a range of `CDT::Point`, default empty \cgalParamNEnd
+    \cgalParamNBegin{CGAL::Hyperbolic_mesh_2::parameters::seeds_are_in_domain} `bool`, default `false` \cgalParamNEnd
+    \cgalParamNBegin{CGAL::Hyperbolic_mesh_2::parameters::maximum_number_of_operations} `double` >= 0, default
+      `Hyperbolic_mesh_2::default_maximum_number_of_operations`; else `CGAL::Invalid_option_error` \cgalParamNEnd
+    \cgalParamNBegin{CGAL::Hyperbolic_mesh_2::parameters::corner_lopping} `bool`, default `true` \cgalParamNEnd
+    \cgalParamNBegin{CGAL::Hyperbolic_mesh_2::parameters::off_centers} `bool`, default `false` \cgalParamNEnd
+    \cgalParamNBegin{callback} callable as `bool(const Hyperbolic_mesh_2::Progress&)`; false stops \cgalParamNEnd
+    \cgalParamNBegin{verbose} `bool`, default `false` \cgalParamNEnd
+  \cgalNamedParamsEnd
+*/
+template <class CDT, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Hyperbolic_mesh_2::Mesh_statistics
+refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>& criteria,
+                                 const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  return refine_hyperbolic_Ruppert_mesh_2(
+      cdt, criteria, Hyperbolic_mesh_2::internal::mesh_parameters_from_named_parameters<typename CDT::Point>(np));
 }
 
 /*!
@@ -78,11 +105,24 @@ refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>
 template <class CDT>
 Hyperbolic_mesh_2::Mesh_statistics
 refine_hyperbolic_Chew_mesh_2(CDT& cdt, const Hyperbolic_Chew_mesh_criteria_2<CDT>& criteria,
-                              const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters =
-                                  Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>())
+                              const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters)
 {
   Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_Chew_mesh_criteria_2<CDT>, true> r(cdt, criteria, parameters);
   return r.run();
+}
+
+/*!
+  \ingroup PkgHyperbolicMesh2Ref
+  Same as above with the options as CGAL named parameters (the same ones as the named-parameter
+  `refine_hyperbolic_Ruppert_mesh_2()`; the `Mesh_parameters` overload is deprecated).
+*/
+template <class CDT, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Hyperbolic_mesh_2::Mesh_statistics
+refine_hyperbolic_Chew_mesh_2(CDT& cdt, const Hyperbolic_Chew_mesh_criteria_2<CDT>& criteria,
+                              const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  return refine_hyperbolic_Chew_mesh_2(
+      cdt, criteria, Hyperbolic_mesh_2::internal::mesh_parameters_from_named_parameters<typename CDT::Point>(np));
 }
 
 /*!

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <type_traits>
 #include <vector>
 
 typedef CGAL::Poincare_disk_traits_2<> Gt;
@@ -629,6 +630,113 @@ CGAL_HC_TEST_CASE(random_inputs_robustness)
     CGAL_HC_CHECK(st.status != HM::Refinement_status::CANCELLED);
   }
   CGAL_HC_CHECK(runs >= 30);
+}
+
+// ------------------------------------------------------------------ named parameters
+// Every option given as a CGAL named parameter has the same effect as through the (deprecated) Mesh_parameters
+// struct: identical statistics and output vertex count; and each option changes the result against the default
+// run, so an option dropped by the named-parameter overload makes a check fail.
+static bool same_stats(const Stats& a, const Stats& b)
+{
+  return a.status == b.status && a.initial_vertices == b.initial_vertices && a.final_vertices == b.final_vertices &&
+         a.circumcenters_inserted == b.circumcenters_inserted && a.off_centers_inserted == b.off_centers_inserted &&
+         a.midpoint_splits == b.midpoint_splits && a.one_third_splits == b.one_third_splits &&
+         a.lopping_vertices == b.lopping_vertices && a.frame_vertices == b.frame_vertices &&
+         a.removals == b.removals && a.rejected_circumcenters == b.rejected_circumcenters &&
+         a.operations == b.operations && a.small_input_angles == b.small_input_angles &&
+         a.protected_faces == b.protected_faces && a.in_domain_faces == b.in_domain_faces &&
+         a.faces_failing_criteria == b.faces_failing_criteria &&
+         a.minimum_central_angle == b.minimum_central_angle && a.maximum_circumradius == b.maximum_circumradius &&
+         a.h_star == b.h_star && a.termination_guaranteed == b.termination_guaranteed;
+}
+
+struct Np_run { Stats st; std::size_t vertices; };
+
+template <class Criteria, class Options>
+static Np_run run_with(const Pslg& g, const Criteria& c, const Options& opt)
+{
+  CDT cdt; build(cdt, g);
+  Np_run r;
+  if constexpr(std::is_same<Criteria, Chew_criteria>::value) r.st = CGAL::refine_hyperbolic_Chew_mesh_2(cdt, c, opt);
+  else r.st = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, c, opt);
+  r.vertices = cdt.number_of_vertices();
+  CGAL_HC_CHECK(cdt.is_valid());
+  return r;
+}
+
+template <class Criteria, class NP>
+static void check_same(const char* what, const Pslg& g, const Criteria& c, const NP& np, const Params& prm,
+                       bool must_differ_from_default)
+{
+  const Np_run a = run_with(g, c, np), b = run_with(g, c, prm);
+  std::cout << "  " << what << ": " << a.st << std::endl;
+  CGAL_HC_CHECK(same_stats(a.st, b.st));
+  CGAL_HC_CHECK(a.vertices == b.vertices);
+  if(must_differ_from_default) {
+    const Np_run d = run_with(g, c, CGAL::parameters::default_values());
+    CGAL_HC_CHECK(!same_stats(a.st, d.st));
+  }
+}
+
+CGAL_HC_TEST_CASE(named_parameters_match_the_struct)
+{
+  namespace HP = CGAL::Hyperbolic_mesh_2::parameters;
+  const Ruppert_criteria rc(deg(30), 0.3);
+  const Chew_criteria cc(0.3);
+  const Pslg hole = domain_with_hole(), corner = five_degree_corner(), cloud = point_cloud();
+  // defaults: no option, the empty chain, the default struct
+  {
+    CDT t; build(t, hole);
+    const Stats s0 = CGAL::refine_hyperbolic_Ruppert_mesh_2(t, rc);
+    CGAL_HC_CHECK(same_stats(s0, run_with(hole, rc, Params()).st));
+    check_same("Ruppert defaults", hole, rc, CGAL::parameters::default_values(), Params(), false);
+    check_same("Chew defaults", hole, cc, CGAL::parameters::default_values(), Params(), false);
+  }
+  const Params seeded = Params().seeds(hole.seeds.begin(), hole.seeds.end());
+  check_same("Ruppert seeds", hole, rc, HP::seeds(hole.seeds), seeded, true);
+  check_same("Chew seeds", hole, cc, HP::seeds(hole.seeds), seeded, true);
+  check_same("seeds_are_in_domain", hole, rc, HP::seeds_are_in_domain(true, HP::seeds(hole.seeds)),
+             Params().seeds(hole.seeds.begin(), hole.seeds.end()).seeds_are_in_domain(true), true);
+  check_same("maximum_number_of_operations", hole, rc, HP::maximum_number_of_operations(20),
+             Params().maximum_number_of_operations(20), true);
+  CGAL_HC_CHECK(run_with(hole, rc, HP::maximum_number_of_operations(20)).st.status ==
+                HM::Refinement_status::WORK_BOUND_REACHED);
+  check_same("Chew maximum_number_of_operations", hole, cc, HP::maximum_number_of_operations(20),
+             Params().maximum_number_of_operations(20), true);
+  check_same("corner_lopping", corner, rc, HP::corner_lopping(false), Params().corner_lopping(false), true);
+  CGAL_HC_CHECK(run_with(corner, rc, HP::corner_lopping(false)).st.lopping_vertices == 0);
+  check_same("off_centers", cloud, Ruppert_criteria(deg(40)), HP::off_centers(true), Params().off_centers(true), true);
+  CGAL_HC_CHECK(run_with(cloud, Ruppert_criteria(deg(40)), HP::off_centers(true)).st.off_centers_inserted > 0);
+  check_same("verbose", hole, rc, CGAL::parameters::verbose(true), Params().verbose(true), false);
+  // CGAL's own callback tag: same calls, same cancellation
+  {
+    std::size_t calls_np = 0, calls_struct = 0;
+    auto stop_np = [&](const HM::Progress&) { ++calls_np; return false; };
+    auto stop_struct = [&](const HM::Progress&) { ++calls_struct; return false; };
+    const Np_run a = run_with(hole, Ruppert_criteria(deg(40), 0.02), CGAL::parameters::callback(stop_np));
+    const Np_run b = run_with(hole, Ruppert_criteria(deg(40), 0.02), Params().callback(stop_struct));
+    CGAL_HC_CHECK(a.st.status == HM::Refinement_status::CANCELLED);
+    CGAL_HC_CHECK(same_stats(a.st, b.st) && a.vertices == b.vertices);
+    CGAL_HC_CHECK(calls_np >= 1 && calls_np == calls_struct);
+  }
+  // everything at once, CGAL's tags chained as members after the package's free functions
+  check_same("all options", hole, rc,
+             HP::off_centers(true, HP::corner_lopping(false, HP::maximum_number_of_operations(
+                 1e5, HP::seeds(hole.seeds, CGAL::parameters::verbose(false))))),
+             Params().seeds(hole.seeds.begin(), hole.seeds.end()).off_centers(true).corner_lopping(false)
+                 .maximum_number_of_operations(1e5), true);
+  // out-of-range values throw as the struct does, before anything is changed
+  CDT t; build(t, hole);
+  const std::size_t n0 = t.number_of_vertices();
+  CGAL_HC_CHECK_THROWS(CGAL::refine_hyperbolic_Ruppert_mesh_2(t, rc, HP::maximum_number_of_operations(-1)),
+                       CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(CGAL::refine_hyperbolic_Chew_mesh_2(t, cc, HP::maximum_number_of_operations(std::nan(""))),
+                       CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Params().maximum_number_of_operations(-1), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK(t.number_of_vertices() == n0);
+  const std::vector<Point> bad_seed = {Point(2, 0)};
+  CGAL_HC_CHECK_THROWS(CGAL::refine_hyperbolic_Ruppert_mesh_2(t, rc, HP::seeds(bad_seed)),
+                       CGAL::Poincare_disk_domain_error);
 }
 
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }

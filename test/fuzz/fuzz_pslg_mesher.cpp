@@ -127,7 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size)
   try { HM::insert_geodesic_pslg(cdt, pts, segs); } catch(const CGAL::Invalid_input_error&) { return 0; }
   if(cdt.dimension() < 2) return 0;
   const HM::Mesh_parameters<Point> prm =
-      HM::parameters<Point>().maximum_number_of_operations(400).corner_lopping(lopping).off_centers(off);
+      HM::Mesh_parameters<Point>().maximum_number_of_operations(400).corner_lopping(lopping).off_centers(off);
   HM::Mesh_statistics st;
   double s2 = 0;
   try {

@@ -72,11 +72,15 @@ struct Progress
 
 /*!
   \ingroup PkgHyperbolicMesh2Ref
-  Options of the refinement entry points, set with chained calls in the style of CGAL named parameters:
+  \deprecated Use CGAL named parameters instead (`CGAL::Hyperbolic_mesh_2::parameters::seeds(...)`, ...,
+  see `mesh_named_parameters.h`); the named-parameter overloads fill this struct and call the same code.
+  Options of the refinement entry points, set with chained calls:
   \code
   auto stats = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, criteria,
-      CGAL::Hyperbolic_mesh_2::parameters<Point>().seeds(holes.begin(), holes.end()).maximum_number_of_operations(1e6));
+      CGAL::Hyperbolic_mesh_2::Mesh_parameters<Point>().seeds(holes.begin(), holes.end()).maximum_number_of_operations(1e6));
   \endcode
+  (The former shorthand function `Hyperbolic_mesh_2::parameters<Point>()` is gone: that name is now the
+  namespace of the named parameters.)
 */
 /// \ingroup PkgHyperbolicMesh2Ref
 /// The default work bound of the refiners (see `Mesh_parameters::maximum_number_of_operations`).
@@ -127,11 +131,6 @@ private:
   bool lopping_ = true, off_centers_ = false, verbose_ = false;
   std::function<bool(const Progress&)> callback_;
 };
-
-/// \ingroup PkgHyperbolicMesh2Ref
-/// Shorthand: `Hyperbolic_mesh_2::parameters<Point_2>()`.
-template <class Point_2>
-Mesh_parameters<Point_2> parameters() { return Mesh_parameters<Point_2>(); }
 
 /// \ingroup PkgHyperbolicMesh2Ref
 /// What a refinement did and what it reached. Angles in radians, lengths hyperbolic.
