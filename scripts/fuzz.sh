@@ -4,6 +4,7 @@
 # build-fuzz/corpus/<name>/, the repository is not modified). A crash, a sanitizer report or a violated check
 # stops the script with a non-zero status; libFuzzer leaves the reproducer in build-fuzz/.
 # Long runs: FUZZ_SECONDS=3600 bash scripts/fuzz.sh, or build-fuzz/test/fuzz/fuzz_<name> -runs=1000000 <dirs>.
+# The seed is fixed (FUZZ_SEED, default 1) so that a CI run repeats what was run before it landed.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 FUZZ_DIR="${FUZZ_DIR:-$ROOT/build-fuzz}"
@@ -21,7 +22,7 @@ for t in "${targets[@]}"; do
   echo "== $t: ${FUZZ_SECONDS} s"
   log="$FUZZ_DIR/$t.log"
   rc=0
-  (cd "$FUZZ_DIR" && "$FUZZ_DIR/test/fuzz/$t" -max_total_time="$FUZZ_SECONDS" -timeout=60 -rss_limit_mb=4096 \
+  (cd "$FUZZ_DIR" && "$FUZZ_DIR/test/fuzz/$t" -seed="${FUZZ_SEED:-1}" -max_total_time="$FUZZ_SECONDS" -timeout=60 -rss_limit_mb=4096 \
        -print_final_stats=1 "$work" "$ROOT/test/fuzz/corpus/$name") >"$log" 2>&1 || rc=$?
   grep -E "^#[0-9]+ *DONE|stat::number_of_executed_units" "$log" || true
   if [ "$rc" -ne 0 ]; then
