@@ -265,6 +265,26 @@ CGAL_HC_TEST_CASE(bad_input_is_rejected)
   }
 }
 
+CGAL_HC_TEST_CASE(homotopy_basis_rejects_a_bad_base_vertex)
+{
+  RPS rps(2, 3);
+  Mesh m = rps.mesh;
+  auto lm = m.property_map<Mesh::Edge_index, double>("e:hyperbolic_length").first;
+  // out of range, null, and a removed (not yet collected) vertex: each a clear exception, no UB
+  CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, Mesh::Vertex_index(unsigned(m.number_of_vertices() + 5)), lm),
+                       CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, Mesh::null_vertex(), lm), CGAL::Invalid_input_error);
+  Mesh m2 = rps.mesh;
+  auto lm2 = m2.property_map<Mesh::Edge_index, double>("e:hyperbolic_length").first;
+  const Mesh::Vertex_index extra = m2.add_vertex();
+  m2.remove_vertex(extra);
+  CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m2, extra, lm2), CGAL::Invalid_input_error);
+  // a zero weight
+  const auto e0 = *edges(m).first;
+  lm[e0] = 0;
+  CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, rps.base, lm), CGAL::Invalid_input_error);
+}
+
 CGAL_HC_TEST_CASE(homotopy_basis_on_regular_polygon_surfaces)
 {
   for(int g : {2, 3, 4}) {

@@ -45,7 +45,8 @@ typedef std::vector<int> Word;
 
   `TriangleMesh` is a `FaceGraph`, closed and triangulated (loops and multi-edges allowed); the weights are a
   readable edge property map to `double` (positive, finite). Throws `CGAL::Invalid_mesh_error` if the mesh is
-  not a connected closed orientable surface. Cost: O(n log n).
+  not a connected closed orientable surface, `CGAL::Invalid_input_error` if the base vertex is not a vertex of
+  the mesh (e.g. a removed `Surface_mesh` vertex) or a weight is not positive and finite. Cost: O(n log n).
 */
 template <class TriangleMesh>
 class Homotopy_basis
@@ -125,6 +126,10 @@ private:
   void build(EdgeWeightMap w)
   {
     const TriangleMesh& tm = *tm_;
+    // the base vertex must be a vertex of the mesh (a removed or foreign descriptor would index garbage)
+    bool base_found = false;
+    for(vertex_descriptor v : vertices(tm)) if(v == base_) { base_found = true; break; }
+    if(!base_found) throw Invalid_input_error("Homotopy_basis: the base vertex is not a vertex of the mesh");
     for(halfedge_descriptor h : halfedges(tm))
       if(is_border(h, tm)) throw Invalid_mesh_error("Homotopy_basis: the mesh has a boundary (a closed surface is required)");
     // shortest-path tree from the base vertex (Dijkstra; ties broken by the order of the queue)
