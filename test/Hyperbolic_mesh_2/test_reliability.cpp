@@ -71,6 +71,40 @@ std::size_t non_Delaunay_edges(const CDT& cdt)
 
 namespace {
 
+// number of domain faces with a vertex more than 1e-9 outside the hyperbolic convex hull of `input` (the
+// Euclidean hull of the Klein images): a domain that leaked into the frame beyond the hull
+std::size_t domain_faces_outside_hull(const CDT& cdt, const std::vector<Point>& input)
+{
+  auto klein = [](const Point& p) {
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), n = 1 + x * x + y * y;
+    return std::make_pair(2 * x / n, 2 * y / n);
+  };
+  std::vector<std::pair<double, double> > K;
+  for(const Point& p : input) K.push_back(klein(p));
+  auto signed_dist = [&](std::size_t i, std::size_t j, const std::pair<double, double>& c) {
+    const double dx = K[j].first - K[i].first, dy = K[j].second - K[i].second;
+    return (dx * (c.second - K[i].second) - dy * (c.first - K[i].first)) / std::hypot(dx, dy);
+  };
+  auto outside = [&](const Point& p) {
+    const std::pair<double, double> c = klein(p);
+    for(std::size_t i = 0; i < K.size(); ++i)
+      for(std::size_t j = 0; j < K.size(); ++j) {
+        if(i == j) continue;
+        bool hull_edge = true; // every other input point on the left of (or on) ij, up to rounding
+        for(std::size_t m = 0; m < K.size() && hull_edge; ++m)
+          if(m != i && m != j && signed_dist(i, j, K[m]) < -1e-12) hull_edge = false;
+        if(hull_edge && signed_dist(i, j, c) < -1e-9) return true;
+      }
+    return false;
+  };
+  std::size_t n = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->is_in_domain() && (outside(f->vertex(0)->point()) || outside(f->vertex(1)->point()) ||
+                             outside(f->vertex(2)->point())))
+      ++n;
+  return n;
+}
+
 CDT point_cloud(const std::vector<Point>& pts)
 {
   CDT cdt;
@@ -103,6 +137,11 @@ CGAL_HC_TEST_CASE(issue12_Ruppert_point_clouds_stay_Delaunay)
                                                             Params().maximum_number_of_operations(r.ops));
     CGAL_HC_CHECK_MSG(cdt.is_valid(), st);
     CGAL_HC_CHECK_MSG(non_Delaunay_edges(cdt) == 0, non_Delaunay_edges(cdt) << " non-Delaunay edges: " << st);
+    // the domain is the hull: no domain face reaches a frame vertex beyond it (the marks of the faces around a
+    // split point were once decided by the orientation of a rounded split point of the same geodesic, and 56
+    // frame faces of cloud2 ended in the domain, bad faces that could never be refined)
+    CGAL_HC_CHECK_MSG(domain_faces_outside_hull(cdt, *r.pts) == 0,
+                      domain_faces_outside_hull(cdt, *r.pts) << " domain faces outside the hull: " << st);
   }
 }
 

@@ -664,15 +664,14 @@ private:
     if(!cdt_.is_edge(a, b, f, i) || !cdt_.is_constrained(Edge(f, i))) return Vertex_handle();
     Face_handle g = f->neighbor(i);
     const bool in_f = !cdt_.is_infinite(f) && f->is_in_domain(), in_g = !cdt_.is_infinite(g) && g->is_in_domain();
-    const Point pa = a->point(), pb = b->point();
-    // orientation of f's side w.r.t. the oriented geodesic ab
-    Orientation side_f;
-    if(!cdt_.is_infinite(f->vertex(i))) side_f = gt_.orientation_2_object()(pa, pb, f->vertex(i)->point());
-    else side_f = Orientation(-int(gt_.orientation_2_object()(pa, pb, cdt_.mirror_vertex(f, i)->point())));
+    // the apexes of the two sides: CGAL's insertion into the edge joins them to the new vertex, and its
+    // flip_around only flips edges opposite the new vertex, so both stay neighbours of it
+    const Vertex_handle apex_f = f->vertex(i), apex_g = cdt_.mirror_vertex(f, i);
     if(stuck_.count(key(a, b))) return Vertex_handle();
     const int seg = segment_id(a, b);
     // Resolution guard: a subsegment with a Euclidean length below 1e-11 is not split (its rounded split points
     // are a few ulps from its endpoints).
+    const Point pa = a->point(), pb = b->point();
     const double ex = CGAL::to_double(pa.x()) - CGAL::to_double(pb.x()), ey = CGAL::to_double(pa.y()) - CGAL::to_double(pb.y());
     Point q;
     if(ex * ex + ey * ey < 1e-22 || !choose_split_point(p, f, i, q)) {
@@ -680,22 +679,40 @@ private:
     }
     Vertex_handle v = cdt_.insert(q, CDT::EDGE, f, i);
     dead_.erase(v);
-    auto fc = cdt_.incident_faces(v), done = fc;
-    do {
-      if(cdt_.is_infinite(fc)) { fc->set_in_domain(false); continue; }
-      bool set = false;
-      for(int k = 0; k < 3 && !set; ++k) {
-        Vertex_handle x = fc->vertex(k);
-        if(x == v || x == a || x == b) continue;
-        const Orientation o = gt_.orientation_2_object()(pa, pb, x->point());
-        if(o == COLLINEAR) continue;
-        fc->set_in_domain(o == side_f ? in_f : in_g);
-        set = true;
-      }
-      if(!set) fc->set_in_domain(false);
-    } while(++fc != done);
+    mark_sides_of_split(v, apex_f, in_f, apex_g, in_g);
     if(seg >= 0) seg_of_[v] = seg;
     return v;
+  }
+
+  // The in-domain marks of the faces around a new vertex v of a split constrained edge: the two constrained
+  // subsegments at v cut its star into the two old sides; each side is the set of faces reachable, around v
+  // without crossing a constrained edge, from a face that has the old side's apex as a vertex. (Deciding a
+  // face's side by the orientation of one of its vertices w.r.t. the old geodesic is wrong for a face whose only
+  // other vertex is a rounded split point of the same geodesic, a few ulps off it: such faces exist after
+  // flip_around, and a frame face marked in the domain made the Ruppert runs of issue 12 leak out of the hull.)
+  void mark_sides_of_split(Vertex_handle v, Vertex_handle apex_f, bool in_f, Vertex_handle apex_g, bool in_g)
+  {
+    std::vector<Face_handle> star;
+    { auto fc = cdt_.incident_faces(v), done = fc; do { star.push_back(fc); } while(++fc != done); }
+    std::unordered_map<Face_handle, int, Handle_hash_function> side; // 1: f's side, 2: g's side
+    std::vector<Face_handle> stack;
+    for(Face_handle h : star) {
+      if(h->has_vertex(apex_f)) { side[h] = 1; stack.push_back(h); }
+      else if(h->has_vertex(apex_g)) { side[h] = 2; stack.push_back(h); }
+    }
+    while(!stack.empty()) {
+      const Face_handle h = stack.back(); stack.pop_back();
+      const int k = h->index(v);
+      for(int j : {CDT::ccw(k), CDT::cw(k)}) { // the two edges of h through v
+        if(cdt_.is_constrained(Edge(h, j))) continue;
+        const Face_handle n = h->neighbor(j);
+        if(side.emplace(n, side[h]).second) stack.push_back(n);
+      }
+    }
+    for(Face_handle h : star) {
+      auto it = side.find(h);
+      h->set_in_domain(!cdt_.is_infinite(h) && it != side.end() && (it->second == 1 ? in_f : in_g));
+    }
   }
 
   // The split point actually inserted into the constrained edge (f, i) = ab: p (the rounded point of the geodesic
