@@ -11,9 +11,11 @@
 #include <CGAL/Discrete_Ricci_flow/compute_metric.h>
 #include <CGAL/Discrete_Ricci_flow/internal/embedding_motions.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
+#include <exception>
 #include <map>
 #include <set>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -34,6 +36,13 @@ namespace Discrete_Ricci_flow {
   The map is discretely conformal in the sense of Bobenko-Pinkall-Springborn: the chord lengths of the
   inscribed polyhedron are a vertex scaling of the input lengths (after Ptolemy flips).
 */
+template <class Point_3> class Spherical_map;
+namespace internal {
+template <class Point_3>
+Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Point_3>& m0, const std::vector<double>& len,
+                                                   std::size_t p, const Newton_options& o);
+} // namespace internal
+
 template <class Point_3>
 class Spherical_map
 {
@@ -61,10 +70,13 @@ public:
   {
     std::size_t n = 0;
     const Mesh& m = metric_.intrinsic_mesh();
+    const Point_3 o = CGAL::ORIGIN;
     for(auto f : m.faces()) {
       const auto h = m.halfedge(f);
       const Point_3 &a = points_[m.source(h)], &b = points_[m.target(h)], &c = points_[m.target(m.next(h))];
-      if(!(CGAL::to_double(CGAL::determinant(a - CGAL::ORIGIN, b - CGAL::ORIGIN, c - CGAL::ORIGIN)) > 0)) ++n;
+      // the kernel's orientation predicate (exact with Epick): the double determinant misreads faces of size
+      // 1e-9 (bull.off: 210 "flipped" faces, none in fact)
+      if(CGAL::orientation(o, a, b, c) != CGAL::POSITIVE) ++n;
     }
     return n;
   }
@@ -72,6 +84,8 @@ public:
 private:
   template <class TM, class NP> friend Spherical_map<typename boost::property_traits<
     typename CGAL::GetVertexPointMap<TM, NP>::const_type>::value_type> spherical_uniformization(const TM&, const NP&);
+  template <class P> friend Spherical_map<P> internal::spherical_map_with_puncture(
+    const CGAL::Surface_mesh<P>&, const std::vector<double>&, std::size_t, const internal::Newton_options&);
   Metric metric_;
   std::vector<Point_3> points_;
   std::size_t puncture_ = 0;
@@ -288,6 +302,71 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
   }
 }
 
+/// one attempt of `spherical_uniformization()` with the puncture vertex `p` of the sphere triangulation `m0`
+/// (the input connectivity with its Euclidean lengths `len`): the disk flow, the layout, the projection, the
+/// normalization and the spherical Delaunay triangulation. Throws `Numerical_error` when it cannot build them.
+template <class Point_3>
+Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Point_3>& m0, const std::vector<double>& len,
+                                                   std::size_t p, const Newton_options& o)
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  typedef typename Mesh::Vertex_index V;
+  Mesh m = m0;
+  const V pv(static_cast<typename V::size_type>(p));
+  auto orig = m.template add_property_map<V, std::size_t>("v:orig", 0).first;
+  auto lam = m.template add_property_map<typename Mesh::Edge_index, double>("e:lambda", 0.0).first;
+  for(V v : m.vertices()) orig[v] = std::size_t(v);
+  for(auto e : m.edges()) lam[e] = 0.5 * len[e];
+  const std::size_t nv = m.number_of_vertices();
+
+  Spherical_map<Point_3> res;
+  Flow_statistics& st = Metric_access::statistics(res.metric_);
+  Mesh disk;
+  std::unique_ptr<Flow_engine<Point_3> > eng;
+  const V pc = sphere_flow(m, pv, o, disk, eng, st);
+  auto dorig = disk.template property_map<V, std::size_t>("v:orig").first;
+  auto morig = m.template property_map<V, std::size_t>("v:orig").first;
+
+  // layout, inverse stereographic projection (the mirror image: the projection reverses the orientation),
+  // Moebius normalization
+  std::vector<Cplx> w = layout_flat_disk(*eng);
+  Cplx c(0); Real r = 0;
+  std::size_t nlink = 0;
+  for(auto v : disk.vertices()) if(disk.is_border(v)) { c += w[v]; ++nlink; }
+  c /= Real(nlink);
+  for(auto v : disk.vertices()) if(disk.is_border(v)) r += std::abs(w[v] - c) / Real(nlink);
+  std::vector<Vec3> x(nv, Vec3{0, 0, 1});
+  for(auto v : disk.vertices()) {
+    const Cplx z = std::conj((w[v] - c) / r);
+    const Real n2 = std::norm(z);
+    x[dorig[v]] = Vec3{double(2 * z.real() / (n2 + 1)), double(2 * z.imag() / (n2 + 1)), double((n2 - 1) / (n2 + 1))};
+  }
+  for(const auto& q : x) if(!(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])))
+    throw_numerical_error("spherical uniformization: non-finite layout (the flow did not converge)");
+  res.normalization_iterations_ = moebius_normalize(x, res.center_norm_);
+  for(const auto& q : x) res.points_.push_back(Point_3(q[0], q[1], q[2]));
+  res.puncture_ = morig[pc];
+
+  // the spherical Delaunay triangulation: the final sphere triangulation, vertices in the input's order
+  Mesh& sm = Metric_access::mesh(res.metric_);
+  for(std::size_t i = 0; i < nv; ++i) sm.add_vertex(res.points_[i]);
+  for(auto f : m.faces()) {
+    const auto h = m.halfedge(f);
+    if(sm.add_face(V(typename V::size_type(morig[m.source(h)])), V(typename V::size_type(morig[m.target(h)])),
+                   V(typename V::size_type(morig[m.target(m.next(h))]))) == Mesh::null_face())
+      throw_numerical_error("spherical uniformization: the final triangulation is not simplicial (the flow did not converge)");
+  }
+  auto& lengths = Metric_access::add_lengths(res.metric_);
+  for(auto e : sm.edges()) {
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(res.points_[sm.vertex(e, 0)], res.points_[sm.vertex(e, 1)])));
+    lengths[e] = 2 * std::asin((std::min)(1.0, d / 2));
+  }
+  Metric_access::set(res.metric_, Background_geometry::SPHERICAL, std::vector<double>(),
+                     std::vector<double>(m.number_of_vertices(), 0.0), 0, false);
+  res.flipped_ = res.number_of_flipped_faces();
+  return res;
+}
+
 } // namespace internal
 
 /*!
@@ -304,7 +383,15 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
   the vertices at the origin.
 
   \param tm a closed connected genus-0 triangle mesh (`FaceListGraph`)
-  \param np named parameters: `puncture_vertex(i)` (default a vertex of largest degree), `vertex_point_map`,
+  The outcome depends on the puncture vertex (the Delaunay condition at p is restored by Ptolemy flips between
+  whole disk solves, which can cycle or end in a non-simplicial triangulation): without `puncture_vertex`, a
+  vertex of largest degree is tried first, then the next two by degree and 4 vertices spread over the index
+  range, until the flow
+  converges (the discrete conformal map is then unique up to Moebius transformations); the result and its
+  statistics are those of that attempt (else of the first one).
+  Work bound: 7 attempts, each with the iteration bound.
+
+  \param np named parameters: `puncture_vertex(i)` (default: the candidates above), `vertex_point_map`,
          `vertex_index_map`, `input_edge_length_map`, `number_of_iterations`, `accuracy`, `sparse_solver`,
          `verbose`, `callback` (as `compute_metric()`). Zero-area faces are flipped away first.
   \throws CGAL::Invalid_mesh_error unless `tm` is a closed connected genus-0 triangle mesh;
@@ -337,65 +424,42 @@ spherical_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGA
     if(internal::degenerate_face(m, len, area, msg) != Mesh::null_face())
       internal::throw_metric_error(msg + " after the intrinsic Delaunay flips of the input");
   }
-  // the puncture vertex
+  // the puncture vertex: the given one, else candidates (a vertex of largest degree first, then vertices
+  // spread over the index range) tried in turn until one gives a valid map
   std::size_t p = choose_parameter(get_parameter(np, CGAL::internal_np::ricci_puncture_vertex_t_v), std::size_t(-1));
+  std::vector<std::size_t> candidates;
   if(p == std::size_t(-1)) {
-    std::size_t best = 0; p = 0;
-    for(V v : m.vertices()) if(m.degree(v) > best) { best = m.degree(v); p = v; }
+    // the 3 vertices of largest degree (the first of them as before: the default), then 4 spread by index
+    std::vector<std::pair<std::size_t, std::size_t> > by_degree; // (-degree, index): stable order
+    for(V v : m.vertices()) by_degree.push_back({std::size_t(-1) - m.degree(v), std::size_t(v)});
+    std::sort(by_degree.begin(), by_degree.end());
+    const std::size_t n = m.number_of_vertices();
+    for(std::size_t i = 0; i < 3 && i < n; ++i) candidates.push_back(by_degree[i].second);
+    for(std::size_t i = 1; i <= 4; ++i) {
+      const std::size_t c = (i * n) / 5;
+      if(c < n && std::find(candidates.begin(), candidates.end(), c) == candidates.end()) candidates.push_back(c);
+    }
   } else if(p >= m.number_of_vertices()) internal::throw_option_error("puncture_vertex: no such vertex");
-  const V pv(static_cast<typename V::size_type>(p));
-  auto orig = m.template add_property_map<V, std::size_t>("v:orig", 0).first;
-  auto lam = m.template add_property_map<typename Mesh::Edge_index, double>("e:lambda", 0.0).first;
-  for(V v : m.vertices()) orig[v] = std::size_t(v);
-  for(auto e : m.edges()) lam[e] = 0.5 * len[e];
-  const std::size_t nv = m.number_of_vertices();
-
+  else candidates.push_back(p);
+  // the result: the first valid map, else the first attempt's result; the first error if every attempt threw
   Spherical_map<Point_3> res;
+  bool have = false;
+  std::exception_ptr error;
+  for(std::size_t c : candidates) {
+    try {
+      Spherical_map<Point_3> r = internal::spherical_map_with_puncture<Point_3>(m, len, c, o);
+      const bool flow_converged = r.statistics().converged();
+      if(r.converged() || !have) { res = std::move(r); have = true; }
+      // a converged flow gives the map, unique up to Moebius transformations, whatever the puncture: if it is
+      // not valid (faces below double precision on the sphere), another puncture does not help
+      if(res.converged() || flow_converged) break;
+    } catch(const CGAL::Numerical_error&) {
+      if(!error) error = std::current_exception();
+    }
+  }
+  if(!have) std::rethrow_exception(error);
   Flow_statistics& st = internal::Metric_access::statistics(res.metric_);
-  Mesh disk;
-  std::unique_ptr<internal::Flow_engine<Point_3> > eng;
-  const V pc = internal::sphere_flow(m, pv, o, disk, eng, st);
   st.number_of_initial_flips = initial_flips;
-  auto dorig = disk.template property_map<V, std::size_t>("v:orig").first;
-  auto morig = m.template property_map<V, std::size_t>("v:orig").first;
-
-  // layout, inverse stereographic projection (the mirror image: the projection reverses the orientation),
-  // Moebius normalization
-  std::vector<internal::Cplx> w = internal::layout_flat_disk(*eng);
-  internal::Cplx c(0); internal::Real r = 0;
-  std::size_t nlink = 0;
-  for(auto v : disk.vertices()) if(disk.is_border(v)) { c += w[v]; ++nlink; }
-  c /= internal::Real(nlink);
-  for(auto v : disk.vertices()) if(disk.is_border(v)) r += std::abs(w[v] - c) / internal::Real(nlink);
-  std::vector<internal::Vec3> x(nv, internal::Vec3{0, 0, 1});
-  for(auto v : disk.vertices()) {
-    const internal::Cplx z = std::conj((w[v] - c) / r);
-    const internal::Real n2 = std::norm(z);
-    x[dorig[v]] = internal::Vec3{double(2 * z.real() / (n2 + 1)), double(2 * z.imag() / (n2 + 1)), double((n2 - 1) / (n2 + 1))};
-  }
-  for(const auto& q : x) if(!(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])))
-    internal::throw_numerical_error("spherical uniformization: non-finite layout (the flow did not converge)");
-  res.normalization_iterations_ = internal::moebius_normalize(x, res.center_norm_);
-  for(const auto& q : x) res.points_.push_back(Point_3(q[0], q[1], q[2]));
-  res.puncture_ = morig[pc];
-
-  // the spherical Delaunay triangulation: the final sphere triangulation, vertices in the input's order
-  Mesh& sm = internal::Metric_access::mesh(res.metric_);
-  for(std::size_t i = 0; i < nv; ++i) sm.add_vertex(res.points_[i]);
-  for(auto f : m.faces()) {
-    const auto h = m.halfedge(f);
-    if(sm.add_face(V(typename V::size_type(morig[m.source(h)])), V(typename V::size_type(morig[m.target(h)])),
-                   V(typename V::size_type(morig[m.target(m.next(h))]))) == Mesh::null_face())
-      internal::throw_numerical_error("spherical uniformization: the final triangulation is not simplicial (the flow did not converge)");
-  }
-  auto& lengths = internal::Metric_access::add_lengths(res.metric_);
-  for(auto e : sm.edges()) {
-    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(res.points_[sm.vertex(e, 0)], res.points_[sm.vertex(e, 1)])));
-    lengths[e] = 2 * std::asin((std::min)(1.0, d / 2));
-  }
-  internal::Metric_access::set(res.metric_, Background_geometry::SPHERICAL, std::vector<double>(),
-                               std::vector<double>(m.number_of_vertices(), 0.0), 0, false);
-  res.flipped_ = res.number_of_flipped_faces();
   st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
