@@ -16,6 +16,7 @@
 #include <cmath>
 #include <deque>
 #include <exception>
+#include <limits>
 #include <map>
 #include <set>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -56,9 +57,16 @@ public:
   const std::vector<Point_3>& sphere_points() const { return points_; }
   /// the vertex sent to the north pole before the normalization
   std::size_t puncture_vertex() const { return puncture_; }
-  /// true if the flow converged and the result is a valid map: no flipped face (`number_of_flipped_faces()`)
-  /// and the centre of mass at the origin (below 1e-10)
-  bool converged() const { return metric_.converged() && flipped_ == 0 && center_norm_ < 1e-10; }
+  /// true if the flow converged and the result is a valid map: no flipped face (`number_of_flipped_faces()`),
+  /// the centre of mass at the origin (below 1e-10), and the spherical metric of the (double-precision)
+  /// points has its angle sums 2 pi within 1e-8 (`max_angle_sum_error()`; faces below double precision on the
+  /// sphere break it)
+  bool converged() const
+  {
+    return metric_.converged() && flipped_ == 0 && center_norm_ < 1e-10 && max_angle_sum_error_ < 1e-8;
+  }
+  /// max over the vertices of |2 pi - angle sum| in `metric()`
+  double max_angle_sum_error() const { return max_angle_sum_error_; }
   const Flow_statistics& statistics() const { return metric_.statistics(); }
   /// iterations of the Moebius normalization and the norm of the centre of mass it reached
   int normalization_iterations() const { return normalization_iterations_; }
@@ -92,11 +100,14 @@ private:
   int normalization_iterations_ = 0;
   double center_norm_ = 0;
   std::size_t flipped_ = 0;
+  double max_angle_sum_error_ = 0;
 };
 
 namespace internal {
 
-typedef std::array<double, 3> Vec3;
+// points on the sphere during the normalization, in long double: the boosts expand the small faces of the
+// limbs, so their rounding errors are amplified (camel.off: flipped faces of size 1e-5 with double)
+typedef std::array<long double, 3> Vec3;
 
 /// the disk: a copy of the sphere triangulation `m` without the star of p (Euler operations, so loops and
 /// multi-edges of an intrinsic triangulation are fine); the properties "v:orig" and "e:lambda" follow
@@ -178,14 +189,14 @@ std::vector<Cplx> layout_flat_disk(const Flow_engine<Point_3>& eng)
 
 /// the Moebius transformation of the unit sphere along the unit axis d with parameter beta in (-1, 1)
 /// (a boost of the light cone: points move away from d for beta > 0)
-inline Vec3 boost(const Vec3& x, const Vec3& d, double beta)
+inline Vec3 boost(const Vec3& x, const Vec3& d, long double beta)
 {
-  const double z = x[0] * d[0] + x[1] * d[1] + x[2] * d[2];
-  const double den = 1 - beta * z, s = std::sqrt(1 - beta * beta) / den;
-  const double zn = (z - beta) / den;
+  const long double z = x[0] * d[0] + x[1] * d[1] + x[2] * d[2];
+  const long double den = 1 - beta * z, s = std::sqrt(1 - beta * beta) / den;
+  const long double zn = (z - beta) / den;
   Vec3 r;
   for(int k = 0; k < 3; ++k) r[k] = (x[k] - z * d[k]) * s + zn * d[k];
-  const double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  const long double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
   for(int k = 0; k < 3; ++k) r[k] /= n;
   return r;
 }
@@ -197,13 +208,14 @@ inline int moebius_normalize(std::vector<Vec3>& x, double& residual)
   const int max_iterations = 1000;
   for(int it = 0; it < max_iterations; ++it) {
     Vec3 mu = {0, 0, 0};
-    for(const Vec3& p : x) for(int k = 0; k < 3; ++k) mu[k] += p[k] / double(x.size());
-    residual = std::sqrt(mu[0] * mu[0] + mu[1] * mu[1] + mu[2] * mu[2]);
+    for(const Vec3& p : x) for(int k = 0; k < 3; ++k) mu[k] += p[k] / (long double)(x.size());
+    const long double norm = std::sqrt(mu[0] * mu[0] + mu[1] * mu[1] + mu[2] * mu[2]);
+    residual = double(norm);
     if(residual < 1e-13) return it;
-    const Vec3 d = {mu[0] / residual, mu[1] / residual, mu[2] / residual};
-    double spread = 0;
-    for(const Vec3& p : x) { const double z = p[0] * d[0] + p[1] * d[1] + p[2] * d[2]; spread += (1 - z * z) / double(x.size()); }
-    const double beta = (std::min)(residual / (std::max)(spread, 1e-3), 0.5);
+    const Vec3 d = {mu[0] / norm, mu[1] / norm, mu[2] / norm};
+    long double spread = 0;
+    for(const Vec3& p : x) { const long double z = p[0] * d[0] + p[1] * d[1] + p[2] * d[2]; spread += (1 - z * z) / (long double)(x.size()); }
+    const long double beta = (std::min)(norm / (std::max)(spread, 1e-3L), 0.5L);
     for(Vec3& p : x) p = boost(p, d, beta);
   }
   throw_numerical_error("spherical uniformization: the Moebius normalization did not converge");
@@ -339,12 +351,12 @@ Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Poin
   for(auto v : disk.vertices()) {
     const Cplx z = std::conj((w[v] - c) / r);
     const Real n2 = std::norm(z);
-    x[dorig[v]] = Vec3{double(2 * z.real() / (n2 + 1)), double(2 * z.imag() / (n2 + 1)), double((n2 - 1) / (n2 + 1))};
+    x[dorig[v]] = Vec3{2 * z.real() / (n2 + 1), 2 * z.imag() / (n2 + 1), (n2 - 1) / (n2 + 1)};
   }
   for(const auto& q : x) if(!(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])))
     throw_numerical_error("spherical uniformization: non-finite layout (the flow did not converge)");
   res.normalization_iterations_ = moebius_normalize(x, res.center_norm_);
-  for(const auto& q : x) res.points_.push_back(Point_3(q[0], q[1], q[2]));
+  for(const auto& q : x) res.points_.push_back(Point_3(double(q[0]), double(q[1]), double(q[2])));
   res.puncture_ = morig[pc];
 
   // the spherical Delaunay triangulation: the final sphere triangulation, vertices in the input's order
@@ -364,6 +376,10 @@ Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Poin
   Metric_access::set(res.metric_, Background_geometry::SPHERICAL, std::vector<double>(),
                      std::vector<double>(m.number_of_vertices(), 0.0), 0, false);
   res.flipped_ = res.number_of_flipped_faces();
+  for(auto v : sm.vertices()) { // a NaN angle sum counts as infinite
+    const double k = std::abs(res.metric_.curvature(v));
+    if(!(k <= res.max_angle_sum_error_)) res.max_angle_sum_error_ = std::isnan(k) ? std::numeric_limits<double>::infinity() : k;
+  }
   return res;
 }
 
