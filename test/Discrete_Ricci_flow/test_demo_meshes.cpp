@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -79,14 +80,31 @@ CGAL_HC_TEST_CASE(demo_meshes_genus_at_least_2)
     // greedy relator polygon is too large for double-precision deck transformations (cheese.off: condition
     // 3e14, defect O(1); a known limitation, see the manual): printed, not asserted
     const double defect = emb.relator_defect(), cond = emb.relator_condition();
+    CGAL_HC_CHECK_MSG(!std::isnan(defect) && !std::isnan(cond), name); // an overflow is +infinity, never "0"
     if(cond <= 1e6) CGAL_HC_CHECK_MSG(defect <= 1e-8, name << ": relator defect " << defect << ", condition " << cond);
     else std::cout << "  (ill-conditioned relator) ";
+    // the error model of the manual: the defect is the metric's residual curvature amplified by the relator's
+    // partial products, defect ~ max |K| * condition (observed ratio 0.2 to 30); rounding in the products
+    // (long double) is far below. Checked where the model is linear.
+    const double model = surface.max_angle_defect() * cond;
+    if(model < 1e-4) CGAL_HC_CHECK_MSG(defect <= 1e3 * model + 1e-13, name << ": defect " << defect << " above the model " << model);
+    std::string best = "";
+    if(cond > 1e6) { // the greedy relator's condition depends on the base vertex by orders of magnitude
+      const auto b = RF::Hyperbolic_embedding<Point_3>::best_conditioned_base_vertex(r, 16);
+      const RF::Hyperbolic_embedding<Point_3> eb(r, b);
+      CGAL_HC_CHECK(eb.relator_condition() <= cond);
+      for(std::size_t i = 0; i < eb.number_of_generators(); ++i) CGAL_HC_CHECK_MSG(eb.absolute_trace(i) > 2, name);
+      if(eb.relator_condition() <= 1e6) CGAL_HC_CHECK_MSG(eb.relator_defect() <= 1e-8, name << ": base " << std::size_t(b));
+      std::ostringstream os;
+      os << ", best of 16 bases: vertex " << std::size_t(b) << " defect " << eb.relator_defect() << " condition " << eb.relator_condition();
+      best = os.str();
+    }
     std::string canonical = "n/a";
     // (the cut and paste to a canonical system, owned by the layer, is slow at high genus: run up to genus 4 here)
     if(g <= 4) try { canonical = std::to_string(emb.canonical_relator_defect()); } catch(const CGAL::Numerical_error&) {}
     std::cout << "  " << name << ": genus " << g << ", " << r.statistics().iterations << " iterations, max |K| "
               << surface.max_angle_defect() << ", min |trace| " << min_trace << ", relator defect " << defect
-              << " (condition " << cond << "), canonical relator defect " << canonical << std::endl;
+              << " (condition " << cond << "), canonical relator defect " << canonical << best << std::endl;
   }
 }
 
@@ -135,5 +153,5 @@ CGAL_HC_TEST_CASE(demo_meshes_genus_0_spherical)
     }
   }
   std::cout << "  spherical maps: " << converged << " of " << meshes.size() << " converged; not:" << failed << std::endl;
-  CGAL_HC_CHECK_MSG(converged >= 42, converged << " of " << meshes.size());
+  CGAL_HC_CHECK_MSG(converged >= 50, converged << " of " << meshes.size());
 }

@@ -124,3 +124,42 @@ CGAL_HC_TEST_CASE(options_out_of_range)
                          CGAL::Invalid_option_error);
   else CGAL_HC_CHECK(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::SUPERNODAL_CHOLMOD)).converged());
 }
+
+// do_flip(false): on these meshes the flow without flips reaches K = 0 only with triangles that violate a
+// triangle inequality (Luo's extended angles): the status must say so (never CONVERGED), and the lengths
+// written on the input connectivity must be reported invalid. The violations are recounted here from the
+// returned lengths; eight.off, which needs no flip, is the positive control.
+CGAL_HC_TEST_CASE(no_flip_degenerate_solution_is_not_converged)
+{
+  for(const std::string name : {"joint.off", "helmet.off", "anchor.off", "femur.off", "eight.off"}) {
+    Mesh m = read(name);
+    auto out = m.add_property_map<Mesh::Edge_index, double>("e:out", 0.0).first;
+    const auto r = RF::compute_metric(m, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0), out,
+                                      CGAL::parameters::do_flip(false));
+    std::size_t violations = 0;
+    for(auto f : m.faces()) {
+      const auto h = m.halfedge(f);
+      const double l[3] = {out[m.edge(h)], out[m.edge(m.next(h))], out[m.edge(m.prev(h))]};
+      for(int i = 0; i < 3; ++i) if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3])) ++violations;
+    }
+    std::cout << "  " << name << ": " << RF::to_string(r.statistics().status) << ", " << violations
+              << " triangle-inequality violations" << std::endl;
+    CGAL_HC_CHECK_MSG(r.input_connectivity_is_valid() == (violations == 0), name);
+    if(violations > 0) CGAL_HC_CHECK_MSG(!r.converged() && r.statistics().status != RF::Flow_status::CONVERGED, name);
+    if(name == "eight.off") CGAL_HC_CHECK(r.converged() && violations == 0);
+    else CGAL_HC_CHECK_MSG(violations > 0, name << ": expected a degenerate solution without flips");
+  }
+}
+
+// the defect of a motion is +infinity when its matrix is not finite or has a non-positive determinant (the
+// relator's partial products of cheese.off lose their determinant, and the defect of NaN entries used to read
+// as 0)
+CGAL_HC_TEST_CASE(defect_of_non_finite_motion)
+{
+  typedef RF::internal::Long_isometry L;
+  const long double inf = std::numeric_limits<long double>::infinity();
+  CGAL_HC_CHECK(std::isinf(RF::internal::Motion::from(L(inf, 0, 0, 0)).defect()));             // inf / inf
+  CGAL_HC_CHECK(std::isinf(RF::internal::Motion::from(L(inf, 0, 0, 0) * L(1, 0, 1e-3L, 0)).defect())); // det NaN
+  CGAL_HC_CHECK(RF::internal::Motion::from(L(1, 0, 0, 0)).defect() == 0);
+  CGAL_HC_CHECK(std::abs(RF::internal::Motion::from(L(1, 0, 1e-3L, 0)).defect() - 1e-3L) < 1e-9L);
+}

@@ -403,7 +403,8 @@ bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow
                        : eng.len[ec.second]; // no flips for the circle packings: same connectivity
     put(out, ec.first, l);
   }
-  if(eng.flips == 0 && init.flips.empty()) return true;
+  // checked even without flips: a flow that ends with degenerate triangles (status DEGENERATE_TRIANGLES, e.g.
+  // with do_flip(false)) leaves lengths on the input connectivity that violate a triangle inequality
   for(auto f : faces(tm)) {
     double l[3] = {0, 0, 0}; int i = 0;
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { if(i >= 3) break; l[i++] = CGAL::to_double(get(out, edge(h, tm))); }

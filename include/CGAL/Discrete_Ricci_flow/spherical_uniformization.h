@@ -11,9 +11,12 @@
 #include <CGAL/Discrete_Ricci_flow/compute_metric.h>
 #include <CGAL/Discrete_Ricci_flow/internal/embedding_motions.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
+#include <exception>
+#include <limits>
 #include <map>
 #include <set>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -34,6 +37,13 @@ namespace Discrete_Ricci_flow {
   The map is discretely conformal in the sense of Bobenko-Pinkall-Springborn: the chord lengths of the
   inscribed polyhedron are a vertex scaling of the input lengths (after Ptolemy flips).
 */
+template <class Point_3> class Spherical_map;
+namespace internal {
+template <class Point_3>
+Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Point_3>& m0, const std::vector<double>& len,
+                                                   std::size_t p, const Newton_options& o);
+} // namespace internal
+
 template <class Point_3>
 class Spherical_map
 {
@@ -47,9 +57,16 @@ public:
   const std::vector<Point_3>& sphere_points() const { return points_; }
   /// the vertex sent to the north pole before the normalization
   std::size_t puncture_vertex() const { return puncture_; }
-  /// true if the flow converged and the result is a valid map: no flipped face (`number_of_flipped_faces()`)
-  /// and the centre of mass at the origin (below 1e-10)
-  bool converged() const { return metric_.converged() && flipped_ == 0 && center_norm_ < 1e-10; }
+  /// true if the flow converged and the result is a valid map: no flipped face (`number_of_flipped_faces()`),
+  /// the centre of mass at the origin (below 1e-10), and the spherical metric of the (double-precision)
+  /// points has its angle sums 2 pi within 1e-8 (`max_angle_sum_error()`; faces below double precision on the
+  /// sphere break it)
+  bool converged() const
+  {
+    return metric_.converged() && flipped_ == 0 && center_norm_ < 1e-10 && max_angle_sum_error_ < 1e-8;
+  }
+  /// max over the vertices of |2 pi - angle sum| in `metric()`
+  double max_angle_sum_error() const { return max_angle_sum_error_; }
   const Flow_statistics& statistics() const { return metric_.statistics(); }
   /// iterations of the Moebius normalization and the norm of the centre of mass it reached
   int normalization_iterations() const { return normalization_iterations_; }
@@ -61,10 +78,13 @@ public:
   {
     std::size_t n = 0;
     const Mesh& m = metric_.intrinsic_mesh();
+    const Point_3 o = CGAL::ORIGIN;
     for(auto f : m.faces()) {
       const auto h = m.halfedge(f);
       const Point_3 &a = points_[m.source(h)], &b = points_[m.target(h)], &c = points_[m.target(m.next(h))];
-      if(!(CGAL::to_double(CGAL::determinant(a - CGAL::ORIGIN, b - CGAL::ORIGIN, c - CGAL::ORIGIN)) > 0)) ++n;
+      // the kernel's orientation predicate (exact with Epick): the double determinant misreads faces of size
+      // 1e-9 (bull.off: 210 "flipped" faces, none in fact)
+      if(CGAL::orientation(o, a, b, c) != CGAL::POSITIVE) ++n;
     }
     return n;
   }
@@ -72,17 +92,22 @@ public:
 private:
   template <class TM, class NP> friend Spherical_map<typename boost::property_traits<
     typename CGAL::GetVertexPointMap<TM, NP>::const_type>::value_type> spherical_uniformization(const TM&, const NP&);
+  template <class P> friend Spherical_map<P> internal::spherical_map_with_puncture(
+    const CGAL::Surface_mesh<P>&, const std::vector<double>&, std::size_t, const internal::Newton_options&);
   Metric metric_;
   std::vector<Point_3> points_;
   std::size_t puncture_ = 0;
   int normalization_iterations_ = 0;
   double center_norm_ = 0;
   std::size_t flipped_ = 0;
+  double max_angle_sum_error_ = 0;
 };
 
 namespace internal {
 
-typedef std::array<double, 3> Vec3;
+// points on the sphere during the normalization, in long double: the boosts expand the small faces of the
+// limbs, so their rounding errors are amplified (camel.off: flipped faces of size 1e-5 with double)
+typedef std::array<long double, 3> Vec3;
 
 /// the disk: a copy of the sphere triangulation `m` without the star of p (Euler operations, so loops and
 /// multi-edges of an intrinsic triangulation are fine); the properties "v:orig" and "e:lambda" follow
@@ -164,14 +189,14 @@ std::vector<Cplx> layout_flat_disk(const Flow_engine<Point_3>& eng)
 
 /// the Moebius transformation of the unit sphere along the unit axis d with parameter beta in (-1, 1)
 /// (a boost of the light cone: points move away from d for beta > 0)
-inline Vec3 boost(const Vec3& x, const Vec3& d, double beta)
+inline Vec3 boost(const Vec3& x, const Vec3& d, long double beta)
 {
-  const double z = x[0] * d[0] + x[1] * d[1] + x[2] * d[2];
-  const double den = 1 - beta * z, s = std::sqrt(1 - beta * beta) / den;
-  const double zn = (z - beta) / den;
+  const long double z = x[0] * d[0] + x[1] * d[1] + x[2] * d[2];
+  const long double den = 1 - beta * z, s = std::sqrt(1 - beta * beta) / den;
+  const long double zn = (z - beta) / den;
   Vec3 r;
   for(int k = 0; k < 3; ++k) r[k] = (x[k] - z * d[k]) * s + zn * d[k];
-  const double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  const long double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
   for(int k = 0; k < 3; ++k) r[k] /= n;
   return r;
 }
@@ -183,13 +208,14 @@ inline int moebius_normalize(std::vector<Vec3>& x, double& residual)
   const int max_iterations = 1000;
   for(int it = 0; it < max_iterations; ++it) {
     Vec3 mu = {0, 0, 0};
-    for(const Vec3& p : x) for(int k = 0; k < 3; ++k) mu[k] += p[k] / double(x.size());
-    residual = std::sqrt(mu[0] * mu[0] + mu[1] * mu[1] + mu[2] * mu[2]);
+    for(const Vec3& p : x) for(int k = 0; k < 3; ++k) mu[k] += p[k] / (long double)(x.size());
+    const long double norm = std::sqrt(mu[0] * mu[0] + mu[1] * mu[1] + mu[2] * mu[2]);
+    residual = double(norm);
     if(residual < 1e-13) return it;
-    const Vec3 d = {mu[0] / residual, mu[1] / residual, mu[2] / residual};
-    double spread = 0;
-    for(const Vec3& p : x) { const double z = p[0] * d[0] + p[1] * d[1] + p[2] * d[2]; spread += (1 - z * z) / double(x.size()); }
-    const double beta = (std::min)(residual / (std::max)(spread, 1e-3), 0.5);
+    const Vec3 d = {mu[0] / norm, mu[1] / norm, mu[2] / norm};
+    long double spread = 0;
+    for(const Vec3& p : x) { const long double z = p[0] * d[0] + p[1] * d[1] + p[2] * d[2]; spread += (1 - z * z) / (long double)(x.size()); }
+    const long double beta = (std::min)(norm / (std::max)(spread, 1e-3L), 0.5L);
     for(Vec3& p : x) p = boost(p, d, beta);
   }
   throw_numerical_error("spherical uniformization: the Moebius normalization did not converge");
@@ -288,6 +314,75 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
   }
 }
 
+/// one attempt of `spherical_uniformization()` with the puncture vertex `p` of the sphere triangulation `m0`
+/// (the input connectivity with its Euclidean lengths `len`): the disk flow, the layout, the projection, the
+/// normalization and the spherical Delaunay triangulation. Throws `Numerical_error` when it cannot build them.
+template <class Point_3>
+Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Point_3>& m0, const std::vector<double>& len,
+                                                   std::size_t p, const Newton_options& o)
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  typedef typename Mesh::Vertex_index V;
+  Mesh m = m0;
+  const V pv(static_cast<typename V::size_type>(p));
+  auto orig = m.template add_property_map<V, std::size_t>("v:orig", 0).first;
+  auto lam = m.template add_property_map<typename Mesh::Edge_index, double>("e:lambda", 0.0).first;
+  for(V v : m.vertices()) orig[v] = std::size_t(v);
+  for(auto e : m.edges()) lam[e] = 0.5 * len[e];
+  const std::size_t nv = m.number_of_vertices();
+
+  Spherical_map<Point_3> res;
+  Flow_statistics& st = Metric_access::statistics(res.metric_);
+  Mesh disk;
+  std::unique_ptr<Flow_engine<Point_3> > eng;
+  const V pc = sphere_flow(m, pv, o, disk, eng, st);
+  auto dorig = disk.template property_map<V, std::size_t>("v:orig").first;
+  auto morig = m.template property_map<V, std::size_t>("v:orig").first;
+
+  // layout, inverse stereographic projection (the mirror image: the projection reverses the orientation),
+  // Moebius normalization
+  std::vector<Cplx> w = layout_flat_disk(*eng);
+  Cplx c(0); Real r = 0;
+  std::size_t nlink = 0;
+  for(auto v : disk.vertices()) if(disk.is_border(v)) { c += w[v]; ++nlink; }
+  c /= Real(nlink);
+  for(auto v : disk.vertices()) if(disk.is_border(v)) r += std::abs(w[v] - c) / Real(nlink);
+  std::vector<Vec3> x(nv, Vec3{0, 0, 1});
+  for(auto v : disk.vertices()) {
+    const Cplx z = std::conj((w[v] - c) / r);
+    const Real n2 = std::norm(z);
+    x[dorig[v]] = Vec3{2 * z.real() / (n2 + 1), 2 * z.imag() / (n2 + 1), (n2 - 1) / (n2 + 1)};
+  }
+  for(const auto& q : x) if(!(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])))
+    throw_numerical_error("spherical uniformization: non-finite layout (the flow did not converge)");
+  res.normalization_iterations_ = moebius_normalize(x, res.center_norm_);
+  for(const auto& q : x) res.points_.push_back(Point_3(double(q[0]), double(q[1]), double(q[2])));
+  res.puncture_ = morig[pc];
+
+  // the spherical Delaunay triangulation: the final sphere triangulation, vertices in the input's order
+  Mesh& sm = Metric_access::mesh(res.metric_);
+  for(std::size_t i = 0; i < nv; ++i) sm.add_vertex(res.points_[i]);
+  for(auto f : m.faces()) {
+    const auto h = m.halfedge(f);
+    if(sm.add_face(V(typename V::size_type(morig[m.source(h)])), V(typename V::size_type(morig[m.target(h)])),
+                   V(typename V::size_type(morig[m.target(m.next(h))]))) == Mesh::null_face())
+      throw_numerical_error("spherical uniformization: the final triangulation is not simplicial (the flow did not converge)");
+  }
+  auto& lengths = Metric_access::add_lengths(res.metric_);
+  for(auto e : sm.edges()) {
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(res.points_[sm.vertex(e, 0)], res.points_[sm.vertex(e, 1)])));
+    lengths[e] = 2 * std::asin((std::min)(1.0, d / 2));
+  }
+  Metric_access::set(res.metric_, Background_geometry::SPHERICAL, std::vector<double>(),
+                     std::vector<double>(m.number_of_vertices(), 0.0), 0, false);
+  res.flipped_ = res.number_of_flipped_faces();
+  for(auto v : sm.vertices()) { // a NaN angle sum counts as infinite
+    const double k = std::abs(res.metric_.curvature(v));
+    if(!(k <= res.max_angle_sum_error_)) res.max_angle_sum_error_ = std::isnan(k) ? std::numeric_limits<double>::infinity() : k;
+  }
+  return res;
+}
+
 } // namespace internal
 
 /*!
@@ -304,7 +399,15 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
   the vertices at the origin.
 
   \param tm a closed connected genus-0 triangle mesh (`FaceListGraph`)
-  \param np named parameters: `puncture_vertex(i)` (default a vertex of largest degree), `vertex_point_map`,
+  The outcome depends on the puncture vertex (the Delaunay condition at p is restored by Ptolemy flips between
+  whole disk solves, which can cycle or end in a non-simplicial triangulation): without `puncture_vertex`, a
+  vertex of largest degree is tried first, then the next two by degree and 4 vertices spread over the index
+  range, until the flow
+  converges (the discrete conformal map is then unique up to Moebius transformations); the result and its
+  statistics are those of that attempt (else of the first one).
+  Work bound: 7 attempts, each with the iteration bound.
+
+  \param np named parameters: `puncture_vertex(i)` (default: the candidates above), `vertex_point_map`,
          `vertex_index_map`, `input_edge_length_map`, `number_of_iterations`, `accuracy`, `sparse_solver`,
          `verbose`, `callback` (as `compute_metric()`). Zero-area faces are flipped away first.
   \throws CGAL::Invalid_mesh_error unless `tm` is a closed connected genus-0 triangle mesh;
@@ -337,65 +440,42 @@ spherical_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGA
     if(internal::degenerate_face(m, len, area, msg) != Mesh::null_face())
       internal::throw_metric_error(msg + " after the intrinsic Delaunay flips of the input");
   }
-  // the puncture vertex
+  // the puncture vertex: the given one, else candidates (a vertex of largest degree first, then vertices
+  // spread over the index range) tried in turn until one gives a valid map
   std::size_t p = choose_parameter(get_parameter(np, CGAL::internal_np::ricci_puncture_vertex_t_v), std::size_t(-1));
+  std::vector<std::size_t> candidates;
   if(p == std::size_t(-1)) {
-    std::size_t best = 0; p = 0;
-    for(V v : m.vertices()) if(m.degree(v) > best) { best = m.degree(v); p = v; }
+    // the 3 vertices of largest degree (the first of them as before: the default), then 4 spread by index
+    std::vector<std::pair<std::size_t, std::size_t> > by_degree; // (-degree, index): stable order
+    for(V v : m.vertices()) by_degree.push_back({std::size_t(-1) - m.degree(v), std::size_t(v)});
+    std::sort(by_degree.begin(), by_degree.end());
+    const std::size_t n = m.number_of_vertices();
+    for(std::size_t i = 0; i < 3 && i < n; ++i) candidates.push_back(by_degree[i].second);
+    for(std::size_t i = 1; i <= 4; ++i) {
+      const std::size_t c = (i * n) / 5;
+      if(c < n && std::find(candidates.begin(), candidates.end(), c) == candidates.end()) candidates.push_back(c);
+    }
   } else if(p >= m.number_of_vertices()) internal::throw_option_error("puncture_vertex: no such vertex");
-  const V pv(static_cast<typename V::size_type>(p));
-  auto orig = m.template add_property_map<V, std::size_t>("v:orig", 0).first;
-  auto lam = m.template add_property_map<typename Mesh::Edge_index, double>("e:lambda", 0.0).first;
-  for(V v : m.vertices()) orig[v] = std::size_t(v);
-  for(auto e : m.edges()) lam[e] = 0.5 * len[e];
-  const std::size_t nv = m.number_of_vertices();
-
+  else candidates.push_back(p);
+  // the result: the first valid map, else the first attempt's result; the first error if every attempt threw
   Spherical_map<Point_3> res;
+  bool have = false;
+  std::exception_ptr error;
+  for(std::size_t c : candidates) {
+    try {
+      Spherical_map<Point_3> r = internal::spherical_map_with_puncture<Point_3>(m, len, c, o);
+      const bool flow_converged = r.statistics().converged();
+      if(r.converged() || !have) { res = std::move(r); have = true; }
+      // a converged flow gives the map, unique up to Moebius transformations, whatever the puncture: if it is
+      // not valid (faces below double precision on the sphere), another puncture does not help
+      if(res.converged() || flow_converged) break;
+    } catch(const CGAL::Numerical_error&) {
+      if(!error) error = std::current_exception();
+    }
+  }
+  if(!have) std::rethrow_exception(error);
   Flow_statistics& st = internal::Metric_access::statistics(res.metric_);
-  Mesh disk;
-  std::unique_ptr<internal::Flow_engine<Point_3> > eng;
-  const V pc = internal::sphere_flow(m, pv, o, disk, eng, st);
   st.number_of_initial_flips = initial_flips;
-  auto dorig = disk.template property_map<V, std::size_t>("v:orig").first;
-  auto morig = m.template property_map<V, std::size_t>("v:orig").first;
-
-  // layout, inverse stereographic projection (the mirror image: the projection reverses the orientation),
-  // Moebius normalization
-  std::vector<internal::Cplx> w = internal::layout_flat_disk(*eng);
-  internal::Cplx c(0); internal::Real r = 0;
-  std::size_t nlink = 0;
-  for(auto v : disk.vertices()) if(disk.is_border(v)) { c += w[v]; ++nlink; }
-  c /= internal::Real(nlink);
-  for(auto v : disk.vertices()) if(disk.is_border(v)) r += std::abs(w[v] - c) / internal::Real(nlink);
-  std::vector<internal::Vec3> x(nv, internal::Vec3{0, 0, 1});
-  for(auto v : disk.vertices()) {
-    const internal::Cplx z = std::conj((w[v] - c) / r);
-    const internal::Real n2 = std::norm(z);
-    x[dorig[v]] = internal::Vec3{double(2 * z.real() / (n2 + 1)), double(2 * z.imag() / (n2 + 1)), double((n2 - 1) / (n2 + 1))};
-  }
-  for(const auto& q : x) if(!(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])))
-    internal::throw_numerical_error("spherical uniformization: non-finite layout (the flow did not converge)");
-  res.normalization_iterations_ = internal::moebius_normalize(x, res.center_norm_);
-  for(const auto& q : x) res.points_.push_back(Point_3(q[0], q[1], q[2]));
-  res.puncture_ = morig[pc];
-
-  // the spherical Delaunay triangulation: the final sphere triangulation, vertices in the input's order
-  Mesh& sm = internal::Metric_access::mesh(res.metric_);
-  for(std::size_t i = 0; i < nv; ++i) sm.add_vertex(res.points_[i]);
-  for(auto f : m.faces()) {
-    const auto h = m.halfedge(f);
-    if(sm.add_face(V(typename V::size_type(morig[m.source(h)])), V(typename V::size_type(morig[m.target(h)])),
-                   V(typename V::size_type(morig[m.target(m.next(h))]))) == Mesh::null_face())
-      internal::throw_numerical_error("spherical uniformization: the final triangulation is not simplicial (the flow did not converge)");
-  }
-  auto& lengths = internal::Metric_access::add_lengths(res.metric_);
-  for(auto e : sm.edges()) {
-    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(res.points_[sm.vertex(e, 0)], res.points_[sm.vertex(e, 1)])));
-    lengths[e] = 2 * std::asin((std::min)(1.0, d / 2));
-  }
-  internal::Metric_access::set(res.metric_, Background_geometry::SPHERICAL, std::vector<double>(),
-                               std::vector<double>(m.number_of_vertices(), 0.0), 0, false);
-  res.flipped_ = res.number_of_flipped_faces();
   st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

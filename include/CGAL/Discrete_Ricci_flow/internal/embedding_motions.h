@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <limits>
 
 namespace CGAL {
 namespace Discrete_Ricci_flow {
@@ -64,16 +65,20 @@ struct Motion
     return euclidean(Real(1) / a, -b / a);
   }
   Motion normalized() const { return hyperbolic ? from(h.normalized()) : *this; }
-  /// distance to the identity (max entry difference of the normalized matrix, up to sign; |a - 1| + |b|)
+  /// distance to the identity (max entry difference of the normalized matrix, up to sign; |a - 1| + |b|);
+  /// +infinity for a motion with a non-finite entry (an overflowed product is never "close to the identity")
   Real defect() const
   {
-    if(!hyperbolic) return std::abs(a - Real(1)) + std::abs(b);
-    const Long_isometry n = h.normalized();
+    const Real inf = std::numeric_limits<Real>::infinity();
+    if(!hyperbolic) { const Real d = std::abs(a - Real(1)) + std::abs(b); return std::isfinite(d) ? d : inf; }
+    const Long_isometry n = h.normalized(); // NaN entries if the determinant is not positive
+    if(!std::isfinite(n.alpha_real() + n.alpha_imag() + n.beta_real() + n.beta_imag())) return inf;
     const Real d[4] = {n.alpha_real() - 1, n.alpha_imag(), n.beta_real(), n.beta_imag()};
     const Real e[4] = {n.alpha_real() + 1, n.alpha_imag(), n.beta_real(), n.beta_imag()};
     Real dp = 0, dm = 0;
     for(int i = 0; i < 4; ++i) { dp = (std::max)(dp, std::abs(d[i])); dm = (std::max)(dm, std::abs(e[i])); }
-    return (std::min)(dp, dm);
+    const Real r = (std::min)(dp, dm);
+    return std::isfinite(r) ? r : inf;
   }
 };
 

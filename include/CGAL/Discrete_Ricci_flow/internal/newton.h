@@ -140,7 +140,9 @@ public:
       if(!report(err, t)) { st_.status = err < o_.accuracy ? Flow_status::CONVERGED : Flow_status::CANCELLED; break; }
     }
     if(st_.status == Flow_status::CONVERGED && o_.polish) polish(err);
-    if(st_.status == Flow_status::CONVERGED && eng_.has_degenerate_face()) st_.status = Flow_status::DEGENERATE_TRIANGLES;
+    // a solution (or the rounding floor) reached only with degenerate triangles is not a metric
+    if((st_.status == Flow_status::CONVERGED || st_.status == Flow_status::STAGNATED) && eng_.has_degenerate_face())
+      st_.status = Flow_status::DEGENERATE_TRIANGLES;
     st_.max_curvature_error = err;
     st_.number_of_flips = eng_.flips;
   }

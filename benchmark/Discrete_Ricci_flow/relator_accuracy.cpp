@@ -1,0 +1,60 @@
+// What dominates the relator defect of Hyperbolic_embedding (issue 11 item 2): for each mesh (default: the
+// ill-conditioned demo meshes turbine.off, couplingdown.off, cheese.off),
+//  1. the flow stopped at several accuracies (and at the default rounding level), embedding at base vertex 0:
+//     if the defect follows max |K|, the metric's residual curvature dominates, not the rounding of the
+//     (long-double) products;
+//  2. `number_of_bases` base vertices spread over the index range: defect and relator condition, and their
+//     ratio (defect ~ max |K| * condition if the model of the manual holds).
+// Usage: relator_accuracy [number_of_bases [mesh ...]]
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Discrete_Ricci_flow.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Epick K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace RF = CGAL::Discrete_Ricci_flow;
+
+template <class Metric>
+void line(const std::string& what, const Metric& r, std::size_t base)
+{
+  const double k = r.hyperbolic_surface(CGAL::Hyperbolic_surface_2::parameters::require_smooth_metric(false)).max_angle_defect();
+  const RF::Hyperbolic_embedding<K::Point_3> e(r, Mesh::Vertex_index(static_cast<Mesh::size_type>(base)));
+  double min_trace = 1e300;
+  for(std::size_t i = 0; i < e.number_of_generators(); ++i) min_trace = (std::min)(min_trace, e.absolute_trace(i));
+  const double d = e.relator_defect(), c = e.relator_condition();
+  std::cout << "  " << what << " base " << base << ": max |K| " << k << ", defect " << d << ", condition " << c
+            << ", defect / (max|K| condition) " << d / (k * c) << ", min |trace| " << min_trace << std::endl;
+}
+
+int main(int argc, char** argv)
+{
+  const std::size_t nb = argc > 1 ? std::size_t(std::atoi(argv[1])) : 16;
+  std::vector<std::string> files;
+  for(int a = 2; a < argc; ++a) files.push_back(argv[a]);
+  if(files.empty())
+    for(const char* n : {"turbine.off", "couplingdown.off", "cheese.off"})
+      files.push_back(std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/" + n);
+  for(const std::string& f : files) {
+    Mesh m;
+    if(!CGAL::IO::read_polygon_mesh(f, m)) { std::cerr << "cannot read " << f << std::endl; continue; }
+    if(!CGAL::is_triangle_mesh(m)) CGAL::Polygon_mesh_processing::triangulate_faces(m);
+    std::cout << f << " (" << m.number_of_faces() << " faces)" << std::endl;
+    try {
+      for(double acc : {1e-9, 1e-11, 1e-13}) {
+        const auto r = RF::hyperbolic_uniformization(m, CGAL::parameters::accuracy(acc));
+        std::ostringstream os; os << "accuracy " << acc;
+        if(r.converged()) line(os.str(), r, 0);
+      }
+      const auto r = RF::hyperbolic_uniformization(m); // default: the rounding level
+      for(std::size_t i = 0; i < nb; ++i) line("default", r, (i * r.intrinsic_mesh().number_of_vertices()) / nb);
+    } catch(const CGAL::Hyperbolic_geometry_error& e) { std::cout << "  " << e.what() << std::endl; }
+  }
+}
