@@ -85,7 +85,7 @@ int main(int argc, char** argv)
     {
       CDT cdt;
       HM::insert_geodesic_pslg(cdt, in.points, in.segments);
-      const CGAL::Hyperbolic_mesh_criteria_2<CDT> criteria(35 * pi / 180, eps);
+      const CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT> criteria(35 * pi / 180, eps);
       const HM::Mesh_statistics st = CGAL::refine_hyperbolic_Ruppert_mesh_2(
           cdt, criteria,
           HM::parameters::seeds(in.seeds, HM::parameters::maximum_number_of_operations(2e6)));

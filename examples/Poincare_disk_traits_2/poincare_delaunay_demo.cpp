@@ -6,10 +6,10 @@
 //    faces whose circumcircle leaves the disk (horocycle / hypercycle "circles") are shaded.
 // 2. Constrained_Delaunay_triangulation_2 with geodesic constraints: a regular hyperbolic heptagon and two
 //    crossing geodesic chords (Exact_predicates_tag: split at their geodesic intersection).
-// 3. refine_Delaunay_mesh_2 with Poincare_disk_mesh_criteria_2 inside the heptagon.
+// 3. refine_Delaunay_mesh_2 with Hyperbolic_Ruppert_mesh_criteria_2 inside the heptagon.
 // Writes poincare_delaunay.svg, poincare_cdt.svg, poincare_mesh.svg.
 #include <CGAL/Poincare_disk_traits_2.h>
-#include <CGAL/Poincare_disk_mesh_criteria_2.h>
+#include <CGAL/Hyperbolic_mesh_criteria_2.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -127,7 +127,7 @@ int main(int argc, char** argv)
     CDT mesh;
     for(std::size_t i = 0; i < hept.size(); ++i) mesh.insert_constraint(hept[i], hept[(i + 1) % hept.size()]);
     const double angle = 2 * 20.7 * M_PI / 180, radius = 0.6;
-    CGAL::refine_Delaunay_mesh_2(mesh, CGAL::Poincare_disk_mesh_criteria_2<CDT>(angle, radius));
+    CGAL::refine_Delaunay_mesh_2(mesh, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(angle, radius));
     CGAL::Poincare_disk_svg_writer svg3;
     svg3.add_unit_circle();
     std::size_t in_domain = 0;
@@ -137,7 +137,7 @@ int main(int argc, char** argv)
       svg3.add_geodesic_polygon(face_xy(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()),
                                 "#dbe9f6", "#1f4e79", 0.5);
     }
-    svg3.add_text(10, 20, "refine_Delaunay_mesh_2 + Poincare_disk_mesh_criteria_2 (central angle >= 41.4 deg, "
+    svg3.add_text(10, 20, "refine_Delaunay_mesh_2 + Hyperbolic_Ruppert_mesh_criteria_2 (central angle >= 41.4 deg, "
                           "circumradius <= 0.6): " + std::to_string(in_domain) + " triangles", 12);
     svg3.write(out + "poincare_mesh.svg");
     std::cout << "Mesh_2: " << mesh.number_of_vertices() << " vertices, " << in_domain

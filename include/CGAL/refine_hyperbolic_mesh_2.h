@@ -53,10 +53,10 @@ namespace CGAL {
 */
 template <class CDT>
 Hyperbolic_mesh_2::Mesh_statistics
-refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>& criteria,
+refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_Ruppert_mesh_criteria_2<CDT>& criteria,
                                  const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters)
 {
-  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_mesh_criteria_2<CDT>, false> r(cdt, criteria, parameters);
+  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_Ruppert_mesh_criteria_2<CDT> > r(cdt, criteria, parameters);
   return r.run();
 }
 
@@ -77,7 +77,7 @@ refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>
 */
 template <class CDT, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Hyperbolic_mesh_2::Mesh_statistics
-refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>& criteria,
+refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_Ruppert_mesh_criteria_2<CDT>& criteria,
                                  const CGAL_NP_CLASS& np = parameters::default_values())
 {
   return refine_hyperbolic_Ruppert_mesh_2(
@@ -107,7 +107,7 @@ Hyperbolic_mesh_2::Mesh_statistics
 refine_hyperbolic_Chew_mesh_2(CDT& cdt, const Hyperbolic_Chew_mesh_criteria_2<CDT>& criteria,
                               const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters)
 {
-  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_Chew_mesh_criteria_2<CDT>, true> r(cdt, criteria, parameters);
+  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_Chew_mesh_criteria_2<CDT> > r(cdt, criteria, parameters);
   return r.run();
 }
 

@@ -24,7 +24,7 @@ typedef CGAL::Delaunay_mesh_face_base_2<Gt> Fb;
 typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
 typedef CGAL::Constrained_Delaunay_triangulation_2<Gt, Tds, CGAL::Exact_predicates_tag> CDT;
 typedef Gt::Point_2 Point;
-typedef CGAL::Hyperbolic_mesh_criteria_2<CDT> Ruppert_criteria;
+typedef CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT> Ruppert_criteria;
 typedef CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT> Chew_criteria;
 typedef CGAL::Hyperbolic_mesh_2::Mesh_statistics Stats;
 typedef CGAL::Hyperbolic_mesh_2::Mesh_parameters<Point> Params;

@@ -4,14 +4,18 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Poincare_disk_mesh_criteria_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 
 #include "cgal_hc_test.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -314,4 +318,86 @@ CGAL_HC_TEST_CASE(issue8_Ruppert_criteria_name)
   CDT cdt = triangle_with_angle(60);
   const Stats st = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(deg(40), 0.2));
   CGAL_HC_CHECK_MSG(st.status == HM::Refinement_status::SUCCESS && faces_failing_Ruppert(cdt, deg(40), 0.2) == 0, st);
+}
+
+// Issue 8 (item 5): one criteria family, modelling CGAL's MeshingCriteria_2: `Quality`, `Is_bad` answering
+// CGAL::Mesh_2::Face_badness (a size violation is IMPERATIVELY_BAD), `is_bad_object()`; usable by CGAL's own
+// refine_Delaunay_mesh_2. The outputs of CGAL's mesher are checked with the independent exact criteria above.
+namespace {
+bool meets_Chew(const CDT::Face_handle f, double eps)
+{
+  const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
+  Q c2;
+  if(!cosh2_circumradius(p, q, r, c2)) return false;
+  const Q cd = 1 + 2 * std::min({A(p, q), A(q, r), A(r, p)}); // cosh of the shortest edge
+  if(!(cd * cd >= c2)) return false;
+  if(std::isfinite(eps)) { const double ce = std::cosh(eps * (1 + 1e-12)); if(!(c2 <= Q(ce * ce))) return false; }
+  return true;
+}
+CDT::Face_handle one_face(CDT& cdt, const std::vector<Point>& pts)
+{
+  cdt.clear();
+  cdt.insert(pts.begin(), pts.end());
+  return cdt.finite_faces_begin();
+}
+} // namespace
+
+CGAL_HC_TEST_CASE(issue8_criteria_model_MeshingCriteria_2)
+{
+  typedef CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT> R;
+  typedef CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT> C;
+  namespace M2 = CGAL::Mesh_2;
+  static_assert(std::is_same<decltype(std::declval<const R::Is_bad&>()(std::declval<const CDT::Face_handle&>(),
+                                                                       std::declval<R::Quality&>())),
+                             M2::Face_badness>::value, "");
+  static_assert(std::is_same<decltype(std::declval<const C::Is_bad&>()(std::declval<const C::Quality&>())),
+                             M2::Face_badness>::value, "");
+  static_assert(std::is_same<R::Refinement_policy, HM::Ruppert_policy>::value, "");
+  static_assert(std::is_same<C::Refinement_policy, HM::Chew_policy>::value, "");
+  static_assert(std::is_base_of<R, CGAL::Poincare_disk_mesh_criteria_2<CDT> >::value, "");
+
+  // equilateral face of hyperbolic circumradius 0.5 centred at 0 (central angles 120 degrees, edges longer than
+  // the circumradius), and a flat face (central angle of its shortest edge about 22 degrees)
+  const double t = std::tanh(0.25);
+  const std::vector<Point> equi = {Point(t, 0), Point(t * std::cos(2 * PI / 3), t * std::sin(2 * PI / 3)),
+                                   Point(t * std::cos(4 * PI / 3), t * std::sin(4 * PI / 3))};
+  const std::vector<Point> flat = {Point(-0.1, 0), Point(0.1, 0), Point(0, 0.02)};
+  CDT cdt;
+  R::Quality qe, qf, qs;
+  CDT::Face_handle f = one_face(cdt, equi);
+  CGAL_HC_CHECK(meets_Ruppert(f, deg(40), 0.6) && !meets_Ruppert(f, deg(40), 0.4)); // the oracle agrees
+  CGAL_HC_CHECK(R(deg(40), 0.6).is_bad_object()(f, qe) == M2::NOT_BAD);
+  CGAL_HC_CHECK(R(deg(40), 0.4).is_bad_object()(f, qs) == M2::IMPERATIVELY_BAD);
+  CGAL_HC_CHECK(R(deg(40), 0.4).is_bad_object()(qs) == M2::IMPERATIVELY_BAD);
+  CGAL_HC_CHECK(C(0.6).is_bad_object()(f, qe) == M2::NOT_BAD && meets_Chew(f, 0.6));
+  CGAL_HC_CHECK(C(0.4).is_bad_object()(f, qe) == M2::IMPERATIVELY_BAD && !meets_Chew(f, 0.4));
+  f = one_face(cdt, flat);
+  CGAL_HC_CHECK(!meets_Ruppert(f, deg(40), 2.0) && meets_Ruppert(f, deg(10), 2.0) && !meets_Chew(f, 2.0));
+  CGAL_HC_CHECK(R(deg(40), 2.0).is_bad_object()(f, qf) == M2::BAD);
+  CGAL_HC_CHECK(R(deg(10), 2.0).badness(f) == M2::NOT_BAD);
+  CGAL_HC_CHECK(C(2.0).badness(f) == M2::BAD);
+  CGAL_HC_CHECK(qs < qf && !(qf < qs)); // imperatively bad faces are refined first
+  // CGAL's mesher has no work bound: central angle bounds above 60 degrees are refused there
+  CGAL_HC_CHECK_THROWS(R(deg(61)).is_bad_object(), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(R(deg(120)).is_bad_object(), CGAL::Invalid_option_error);
+
+  // CGAL's refine_Delaunay_mesh_2 with both criteria on a geodesic hexagon
+  const double rh = std::tanh(0.5);
+  for(int chew = 0; chew < 2; ++chew) {
+    CDT mesh;
+    for(int i = 0; i < 6; ++i)
+      mesh.insert_constraint(Point(rh * std::cos(PI * i / 3), rh * std::sin(PI * i / 3)),
+                             Point(rh * std::cos(PI * ((i + 1) % 6) / 3), rh * std::sin(PI * ((i + 1) % 6) / 3)));
+    if(chew) CGAL::refine_Delaunay_mesh_2(mesh, C(0.3));
+    else CGAL::refine_Delaunay_mesh_2(mesh, R(deg(40), 0.3));
+    CGAL_HC_CHECK(mesh.is_valid());
+    CGAL_HC_CHECK(non_Delaunay_edges(mesh) == 0);
+    std::size_t in = 0, failing = 0;
+    for(auto g = mesh.finite_faces_begin(); g != mesh.finite_faces_end(); ++g) {
+      if(!g->is_in_domain()) continue;
+      ++in;
+      if(chew ? !meets_Chew(g, 0.3) : !meets_Ruppert(g, deg(40), 0.3)) ++failing;
+    }
+    CGAL_HC_CHECK_MSG(in > 20 && failing == 0, (chew ? "Chew: " : "Ruppert: ") << failing << " of " << in);
+  }
 }

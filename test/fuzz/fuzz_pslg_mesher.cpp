@@ -133,7 +133,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size)
   try {
     if(chew) st = CGAL::refine_hyperbolic_Chew_mesh_2(cdt, CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT>(eps), prm);
     else {
-      const CGAL::Hyperbolic_mesh_criteria_2<CDT> c(alpha, eps);
+      const CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT> c(alpha, eps);
       s2 = c.sin2_half_alpha();
       st = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, c, prm);
     }

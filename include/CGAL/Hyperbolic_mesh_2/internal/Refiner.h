@@ -29,6 +29,7 @@
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -36,7 +37,8 @@ namespace CGAL {
 namespace Hyperbolic_mesh_2 {
 namespace internal {
 
-template <class CDT, class Criteria, bool is_Chew>
+template <class CDT, class Criteria,
+          bool is_Chew = std::is_same<typename Criteria::Refinement_policy, Chew_policy>::value>
 class Refiner
 {
   typedef typename CDT::Geom_traits Gt;
@@ -314,7 +316,7 @@ private:
   void consider_face(Face_handle f)
   {
     if(cdt_.is_infinite(f) || !f->is_in_domain()) return;
-    if(crit_.badness(f) == Face_badness::GOOD) return;
+    if(crit_.badness(f) == Mesh_2::NOT_BAD) return;
     bad_.push(Queued_face{approximate_cosh2_circumradius(f->vertex(0)->point(), f->vertex(1)->point(),
                                                          f->vertex(2)->point()),
                           f->vertex(0), f->vertex(1), f->vertex(2)});
@@ -388,9 +390,9 @@ private:
       Face_handle f;
       if(!dead_.empty() && (dead_.count(q.v0) || dead_.count(q.v1) || dead_.count(q.v2))) continue; // removed
       if(!cdt_.is_face(q.v0, q.v1, q.v2, f) || !f->is_in_domain()) continue;
-      const Face_badness b = crit_.badness(f);
-      if(b == Face_badness::GOOD) continue;
-      if(b == Face_badness::BAD_ANGLE && is_protected(f)) continue; // thesis Fig. 3.6: left to the lopped corner
+      const Mesh_2::Face_badness b = crit_.badness(f);
+      if(b == Mesh_2::NOT_BAD) continue;
+      if(b == Mesh_2::BAD && is_protected(f)) continue; // thesis Fig. 3.6: left to the lopped corner
       try { refine_face(f, b); }
       catch(const Poincare_disk_domain_error&) { ++st_.unrefinable_faces; } // a constructed point left the disk
     }
@@ -416,7 +418,7 @@ private:
   // The Steiner point of a poor face: its hyperbolic circumcenter (or, for Ruppert with off-centers and a skinny
   // face, Ungor's off-center if closer to the shortest edge); the midpoint of the longest edge if the circumcircle
   // is not compact (no hyperbolic circumcenter exists).
-  void refine_face(Face_handle f, Face_badness badness)
+  void refine_face(Face_handle f, Mesh_2::Face_badness badness)
   {
     const Point &p0 = f->vertex(0)->point(), &p1 = f->vertex(1)->point(), &p2 = f->vertex(2)->point();
     if(!gt_.is_Delaunay_hyperbolic_2_object()(p0, p1, p2)) {
@@ -430,7 +432,7 @@ private:
     Point c = gt_.construct_hyperbolic_circumcenter_2_object()(p0, p1, p2);
     bool off = false;
     if constexpr(!is_Chew) {
-      if(prm_.off_centers() && (badness == Face_badness::BAD_ANGLE || crit_.is_skinny(p0, p1, p2)))
+      if(prm_.off_centers() && (badness == Mesh_2::BAD || crit_.is_skinny(p0, p1, p2)))
         off = off_center(f, c);
     }
     insert_steiner(f, c, off);
@@ -884,10 +886,10 @@ private:
       const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
       const double a = approximate_central_angle(p, q, r);
       amin = std::min(amin, a);
-      const Face_badness b = crit_.badness(f);
-      const bool prot = b == Face_badness::BAD_ANGLE && is_protected(f);
+      const Mesh_2::Face_badness b = crit_.badness(f);
+      const bool prot = b == Mesh_2::BAD && is_protected(f);
       if(prot) ++st_.protected_faces; else amin_u = std::min(amin_u, a);
-      if(b != Face_badness::GOOD && !prot) ++st_.faces_failing_criteria;
+      if(b != Mesh_2::NOT_BAD && !prot) ++st_.faces_failing_criteria;
       rmax = std::max(rmax, approximate_circumradius(p, q, r));
     }
     st_.minimum_central_angle = std::isfinite(amin) ? amin : 0;
