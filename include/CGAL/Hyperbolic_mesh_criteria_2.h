@@ -39,9 +39,13 @@ namespace internal {
 
 // What both criteria share: the traits, the size bound, the `MeshingCriteria_2` quality (an approximation that only
 // orders the queue of CGAL's mesher; every decision is exact) and the guard of CGAL's mesher against collapse.
+template <class Criteria> class Is_bad_functor;
+
 template <class CDT>
 class Hyperbolic_criteria_base
 {
+  template <class> friend class Is_bad_functor;
+
 public:
   typedef typename CDT::Geom_traits Geom_traits;
   typedef typename Geom_traits::FT FT;
@@ -103,6 +107,13 @@ protected:
     const double amin = (std::min)(a1, (std::min)(a2, a3));
     q.sine = amin * delta / cc.sinh2_numerator();
     q.size = has_size_bound() ? cc.cosh2_numerator() / delta / cosh2_epsilon_ : 0;
+  }
+
+  // what `Is_bad` does besides `badness()`: the collapse guard and the quality approximation
+  void check_for_Mesh_2(const Point_2& p, const Point_2& r, const Point_2& s, Quality& q) const
+  {
+    check_not_collapsed(p, r, s);
+    approximate(p, r, s, q);
   }
 
   // CGAL's Mesh_2 handles small input angles with Euclidean concentric shells; in H^2 it can refine towards a
@@ -185,7 +196,6 @@ template <class CDT>
 class Hyperbolic_Ruppert_mesh_criteria_2 : public Hyperbolic_mesh_2::internal::Hyperbolic_criteria_base<CDT>
 {
   typedef Hyperbolic_mesh_2::internal::Hyperbolic_criteria_base<CDT> Base;
-  template <class> friend class Hyperbolic_mesh_2::internal::Is_bad_functor;
 
 public:
   typedef typename Base::Geom_traits Geom_traits;
@@ -294,12 +304,6 @@ protected:
     sin2_half_alpha_ = s * s;
   }
 
-private:
-  void check_for_Mesh_2(const Point_2& p, const Point_2& r, const Point_2& s, Quality& q) const
-  {
-    Base::check_not_collapsed(p, r, s);
-    this->approximate(p, r, s, q);
-  }
 
   double alpha_ = 0, sin2_half_alpha_ = 0;
 };
@@ -329,7 +333,6 @@ template <class CDT>
 class Hyperbolic_Chew_mesh_criteria_2 : public Hyperbolic_mesh_2::internal::Hyperbolic_criteria_base<CDT>
 {
   typedef Hyperbolic_mesh_2::internal::Hyperbolic_criteria_base<CDT> Base;
-  template <class> friend class Hyperbolic_mesh_2::internal::Is_bad_functor;
 
 public:
   typedef typename Base::Geom_traits Geom_traits;
@@ -367,13 +370,6 @@ public:
   {
     return "Chew: central angle >= theta*(r), circumradius <= " +
            (this->has_size_bound() ? std::to_string(this->epsilon_) : std::string("inf"));
-  }
-
-private:
-  void check_for_Mesh_2(const Point_2& p, const Point_2& r, const Point_2& s, Quality& q) const
-  {
-    Base::check_not_collapsed(p, r, s);
-    this->approximate(p, r, s, q);
   }
 };
 

@@ -13,6 +13,25 @@
 #include <complex>
 #include <limits>
 
+// The names of Refine_edges (and Refine_context) in a derived level.
+#define CGAL_HYPERBOLIC_MESH_2_REFINE_EDGES_NAMES \
+  CGAL_HYPERBOLIC_MESH_2_REFINE_CONTEXT_NAMES \
+  using Base::add_frame_if_needed; \
+  using Base::frame_point; \
+  using Base::collect_input; \
+  using Base::wedge_in_domain; \
+  using Base::lop_corners; \
+  using Base::local_feature_size; \
+  using Base::split_encroached_segment; \
+  using Base::split_segment; \
+  using Base::choose_split_point; \
+  using Base::new_edges_are_Delaunay; \
+  using Base::insertable_in_edge; \
+  using Base::collect_free_near; \
+  using Base::remove_free_vertex; \
+  using Base::encroached_segments_left; \
+  using Base::push_forced;
+
 namespace CGAL {
 namespace Hyperbolic_mesh_2 {
 namespace internal {
@@ -22,51 +41,7 @@ class Refine_edges : public Refine_context<CDT, Criteria>
 {
 protected:
   typedef Refine_context<CDT, Criteria> Base;
-  typedef typename Base::Gt Gt;
-  typedef typename Base::FT FT;
-  typedef typename Base::Point Point;
-  typedef typename Base::Vertex_handle Vertex_handle;
-  typedef typename Base::Face_handle Face_handle;
-  typedef typename Base::Edge Edge;
-  typedef typename Base::Locate_type Locate_type;
-  typedef typename Base::Face_set Face_set;
-  typedef typename Base::Policy Policy;
-  typedef typename Base::Queued_face Queued_face;
-  using Base::is_Chew;
-  using Base::cdt_;
-  using Base::crit_;
-  using Base::prm_;
-  using Base::gt_;
-  using Base::st_;
-  using Base::h_star_;
-  using Base::next_report_;
-  using Base::bad_;
-  using Base::encroached_;
-  using Base::forced_;
-  using Base::free_steiner_;
-  using Base::seg_of_;
-  using Base::input_seg_id_;
-  using Base::input_segs_;
-  using Base::small_angle_pairs_;
-  using Base::apexes_;
-  using Base::lop_radius_;
-  using Base::frame_;
-  using Base::dead_;
-  using Base::stuck_;
-  using Base::fast_faces_;
-  using Base::fast_edges_;
-  using Base::small_angle_tolerance;
-  using Base::key;
-  using Base::consider_face;
-  using Base::encroaches;
-  using Base::check_encroached;
-  using Base::post_insert;
-  using Base::budget_left;
-  using Base::longest_edge;
-  using Base::shortest_edge;
-  using Base::is_usable;
-  using Base::segment_id;
-  using Base::queued;
+  CGAL_HYPERBOLIC_MESH_2_REFINE_CONTEXT_NAMES
 
   Refine_edges(CDT& cdt, const Criteria& criteria, const Mesh_parameters<Point>& prm) : Base(cdt, criteria, prm) {}
 
