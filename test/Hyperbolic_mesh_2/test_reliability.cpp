@@ -10,6 +10,7 @@
 #include <CGAL/Exact_rational.h>
 
 #include "cgal_hc_test.h"
+#include "hyperbolic_mesh_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,42 +35,7 @@ typedef HM::Mesh_parameters<Point> Params;
 const double PI = std::acos(-1.0);
 double deg(double d) { return d * PI / 180; }
 
-// Hyperboloid lift L(z) = (2x, 2y, 1 + |z|^2) / (1 - |z|^2), exact.
-struct Lift { Q x, y, t; };
-Lift lift(const Point& p)
-{
-  const Q x(p.x()), y(p.y()), n = 1 - x * x - y * y;
-  return Lift{2 * x / n, 2 * y / n, (1 + x * x + y * y) / n};
-}
-// Klein orientation of p, q, r (the triangulation's orientation), exact.
-int orient_klein(const Point& p, const Point& q, const Point& r)
-{
-  const Lift a = lift(p), b = lift(q), c = lift(r);
-  // central projection to the Klein plane t = 1: orientation of (x/t, y/t); t > 0
-  const Q d = (b.x / b.t - a.x / a.t) * (c.y / c.t - a.y / a.t) - (b.y / b.t - a.y / a.t) * (c.x / c.t - a.x / a.t);
-  return CGAL::sign(d);
-}
-// number of unconstrained edges between two finite faces that fail the exact local Delaunay test
-std::size_t non_Delaunay_edges(const CDT& cdt)
-{
-  std::size_t bad = 0;
-  for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-    if(cdt.is_constrained(*e)) continue;
-    const CDT::Face_handle f = e->first, g = f->neighbor(e->second);
-    if(cdt.is_infinite(f) || cdt.is_infinite(g)) continue;
-    const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
-    const Point& s = cdt.mirror_vertex(f, e->second)->point();
-    // s strictly inside the circle (or horocycle / hypercycle) of p q r: the Euclidean in-circle determinant of
-    // the Poincare coordinates (the side of the hyperboloid lift of s w.r.t. the plane of the lifts of p, q, r)
-    // times the Klein orientation of p q r
-    const Q ax = Q(p.x()) - Q(s.x()), ay = Q(p.y()) - Q(s.y()), bx = Q(q.x()) - Q(s.x()), by = Q(q.y()) - Q(s.y()),
-            cx = Q(r.x()) - Q(s.x()), cy = Q(r.y()) - Q(s.y());
-    const Q aw = ax * ax + ay * ay, bw = bx * bx + by * by, cw = cx * cx + cy * cy;
-    const Q det = ax * (by * cw - bw * cy) - ay * (bx * cw - bw * cx) + aw * (bx * cy - by * cx);
-    if(CGAL::sign(det) * orient_klein(p, q, r) > 0) ++bad;
-  }
-  return bad;
-}
+using hyperbolic_mesh_checks::non_Delaunay_edges;
 
 } // namespace
 
@@ -112,34 +78,12 @@ CGAL_HC_TEST_CASE(issue12_Ruppert_point_clouds_stay_Delaunay)
 
 namespace {
 
-// exact Ruppert criteria (independent): sin^2(alpha/2) = A_min / sinh^2 h >= sin^2(alpha/2), h <= eps
-Q A(const Point& p, const Point& q)
-{
-  const Q px(p.x()), py(p.y()), qx(q.x()), qy(q.y());
-  const Q dx = px - qx, dy = py - qy;
-  return (dx * dx + dy * dy) / ((1 - px * px - py * py) * (1 - qx * qx - qy * qy));
-}
-// cosh^2 of the circumradius from the plane of the three lifts; false if not compact
-bool cosh2_circumradius(const Point& p, const Point& q, const Point& r, Q& c2)
-{
-  const Lift a = lift(p), b = lift(q), c = lift(r);
-  const Q ux = b.x - a.x, uy = b.y - a.y, ut = b.t - a.t, vx = c.x - a.x, vy = c.y - a.y, vt = c.t - a.t;
-  const Q nx = uy * vt - ut * vy, ny = ut * vx - ux * vt, nt = ux * vy - uy * vx;
-  const Q NN = nx * nx + ny * ny - nt * nt;
-  if(!(NN < 0)) return false;
-  const Q nl = nx * a.x + ny * a.y + nt * a.t;
-  c2 = nl * nl / (-NN);
-  return true;
-}
+// exact Ruppert criteria (independent, test/common/hyperbolic_mesh_checks.h): sin^2(alpha/2) A_min / sinh^2 h test, h <= eps
 bool meets_Ruppert(const CDT::Face_handle f, double alpha, double eps)
 {
-  const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
-  Q c2;
-  if(!cosh2_circumradius(p, q, r, c2)) return false;
   const double s = std::sin(alpha / 2);
-  if(!(std::min({A(p, q), A(q, r), A(r, p)}) >= Q(s * s) * (c2 - 1))) return false;
-  if(std::isfinite(eps)) { const double ce = std::cosh(eps * (1 + 1e-12)); if(!(c2 <= Q(ce * ce))) return false; }
-  return true;
+  return hyperbolic_mesh_checks::meets_Ruppert(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                                               s * s, eps);
 }
 std::size_t faces_failing_Ruppert(const CDT& cdt, double alpha, double eps)
 {
@@ -258,8 +202,8 @@ CGAL_HC_TEST_CASE(issue8_central_angles_of_tiny_good_faces)
       if(!f->is_in_domain()) continue;
       const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
       Q c2;
-      CGAL_HC_CHECK(cosh2_circumradius(p, q, r, c2));
-      const double s2 = CGAL::to_double(std::min({A(p, q), A(q, r), A(r, p)}) / (c2 - 1));
+      CGAL_HC_CHECK(hyperbolic_mesh_checks::cosh2_circumradius(p, q, r, c2));
+      const double s2 = CGAL::to_double(hyperbolic_mesh_checks::min_A<Q>(p, q, r) / (c2 - 1));
       exact_min = std::min(exact_min, 2 * std::asin(std::sqrt(std::min(1.0, s2))));
     }
     CGAL_HC_CHECK_MSG(exact_min >= deg(40) * (1 - 1e-9), exact_min);
@@ -326,13 +270,7 @@ CGAL_HC_TEST_CASE(issue8_Ruppert_criteria_name)
 namespace {
 bool meets_Chew(const CDT::Face_handle f, double eps)
 {
-  const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
-  Q c2;
-  if(!cosh2_circumradius(p, q, r, c2)) return false;
-  const Q cd = 1 + 2 * std::min({A(p, q), A(q, r), A(r, p)}); // cosh of the shortest edge
-  if(!(cd * cd >= c2)) return false;
-  if(std::isfinite(eps)) { const double ce = std::cosh(eps * (1 + 1e-12)); if(!(c2 <= Q(ce * ce))) return false; }
-  return true;
+  return hyperbolic_mesh_checks::meets_Chew(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), eps);
 }
 CDT::Face_handle one_face(CDT& cdt, const std::vector<Point>& pts)
 {
