@@ -114,14 +114,14 @@ int main(int argc, char** argv)
     const Pslg gl = octagon_with_hole(s);
     run_h(gl, "Ruppert_euclidean_limit", [&](CDT& cdt, const Pslg& g) {
       return CGAL::refine_hyperbolic_Ruppert_mesh_2(
-          cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>::from_sin2_half_angle(0.125, 2 * s * S_e / std::sqrt(3.0)),
+          cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>::from_sin2_half_angle(0.125, 2 * s * S_e / std::sqrt(3.0)),
           HM::Mesh_parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()).maximum_number_of_operations(2e7));
     });
     // genuinely hyperbolic runs on the PSLG at scale 1, with a hyperbolic circumradius bound eps
     const double eps = 2 * S_e / std::sqrt(3.0);
     const Pslg gh = octagon_with_hole(1.0);
     run_h(gh, "Ruppert_hyperbolic_B0.125", [&](CDT& cdt, const Pslg& g) {
-      return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>::from_sin2_half_angle(0.125, eps),
+      return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>::from_sin2_half_angle(0.125, eps),
                                                     HM::Mesh_parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()).maximum_number_of_operations(2e7));
     });
     run_h(gh, "Chew_hyperbolic", [&](CDT& cdt, const Pslg& g) {
@@ -150,11 +150,11 @@ int main(int argc, char** argv)
       return CGAL::refine_hyperbolic_Chew_mesh_2(cdt, CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT>(eps), prm);
     });
     count("Ruppert", [&](CDT& cdt) {
-      return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(alpha, eps), prm);
+      return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(alpha, eps), prm);
     });
     count("Ruppert_off_centers", [&](CDT& cdt) {
       auto p = prm; p.off_centers(true);
-      return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(alpha, eps), p);
+      return CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(alpha, eps), p);
     });
   }
 
@@ -177,7 +177,7 @@ int main(int argc, char** argv)
       HM::Mesh_statistics st;
       const double t = seconds_of([&] {
         st = CGAL::refine_hyperbolic_Ruppert_mesh_2(
-            cdt, CGAL::Hyperbolic_mesh_criteria_2<CDT>(alpha_deg * PI / 180, eps),
+            cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(alpha_deg * PI / 180, eps),
             HM::Mesh_parameters<Point>().seeds(g.seeds.begin(), g.seeds.end()).off_centers(off == 1).maximum_number_of_operations(2e6));
       });
       std::cout << "bench=off_centers input=" << (input == 0 ? "octagon_with_hole" : "cloud_3000") << " alpha_deg="

@@ -7,7 +7,7 @@
 //                              "circles", thesis Fig. 3.5) in orange, a few empty hyperbolic circles in green
 //   constrained_delaunay.svg   Constrained_Delaunay_triangulation_2 with Exact_predicates_tag: geodesic constraints
 //                              (red) crossing each other, split at their intersection points (black dots)
-//   refined_mesh.svg           refine_Delaunay_mesh_2 with Poincare_disk_mesh_criteria_2 in a geodesic hexagon
+//   refined_mesh.svg           refine_Delaunay_mesh_2 with Hyperbolic_Ruppert_mesh_criteria_2 in a geodesic hexagon
 //   encroachment.svg           the hyperbolic diametral disk of a geodesic segment (green) vs the Euclidean
 //                              Thales disk (dashed grey): the mesher's Angle_2 uses the green one
 // Usage: make_Poincare_disk_traits_2_figures [output_directory]   (default: the current directory)
@@ -17,7 +17,7 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
-#include <CGAL/Poincare_disk_mesh_criteria_2.h>
+#include <CGAL/Hyperbolic_mesh_criteria_2.h>
 #include <CGAL/Poincare_disk_traits_2.h>
 
 #include <cmath>
@@ -142,7 +142,7 @@ int main(int argc, char** argv)
     CDT cdt;
     const std::vector<Point> hex = polygon(6, 3.0, 0.3);
     for(std::size_t i = 0; i < hex.size(); ++i) cdt.insert_constraint(hex[i], hex[(i + 1) % hex.size()]);
-    CGAL::refine_Delaunay_mesh_2(cdt, CGAL::Poincare_disk_mesh_criteria_2<CDT>(2 * 20.0 * PI / 180, 0.5));
+    CGAL::refine_Delaunay_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(2 * 20.0 * PI / 180, 0.5));
     CGAL::Poincare_disk_svg_writer svg(700);
     svg.add_unit_circle();
     std::size_t faces = 0;
@@ -155,7 +155,7 @@ int main(int argc, char** argv)
       if(cdt.is_constrained(*e))
         svg.add_geodesic_segment(e->first->vertex(cdt.ccw(e->second))->point(), e->first->vertex(cdt.cw(e->second))->point(),
                                  "#c00", 1.5);
-    legend(svg, "refine_Delaunay_mesh_2 + Poincare_disk_mesh_criteria_2",
+    legend(svg, "refine_Delaunay_mesh_2 + Hyperbolic_Ruppert_mesh_criteria_2",
            std::to_string(faces) + " faces in a geodesic hexagon (circumradius 3): central angle >= 40 deg, radius <= 0.5");
     svg.write(dir + "refined_mesh.svg");
   }

@@ -85,17 +85,20 @@ int main(int argc, char** argv)
     {
       CDT cdt;
       HM::insert_geodesic_pslg(cdt, in.points, in.segments);
-      const CGAL::Hyperbolic_mesh_criteria_2<CDT> criteria(35 * pi / 180, eps);
+      const CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT> criteria(35 * pi / 180, eps);
       const HM::Mesh_statistics st = CGAL::refine_hyperbolic_Ruppert_mesh_2(
           cdt, criteria,
           HM::parameters::seeds(in.seeds, HM::parameters::maximum_number_of_operations(2e6)));
       std::cout << "Ruppert: " << st << "\n";
-      HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Ruppert.svg", criteria.alpha(), 2 * pi / 3,
-                                    "generalized Ruppert, alpha = 35 deg, eps = " + std::to_string(eps));
-      HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Ruppert_corner_zoom.svg", criteria.alpha(), 2 * pi / 3,
-                                    "zoom x6 on the lopped 5 degree corner", 800, 6.0, 0.25, -0.2);
-      HM::write_central_angle_histogram_svg(cdt, "hyperbolic_mesh_Ruppert_histogram.svg", {35.0},
-                                            "Ruppert: central angles of the shortest edges");
+      namespace HP = HM::parameters;
+      HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Ruppert.svg",
+          HP::target_angle(criteria.alpha(),
+                           HP::title("generalized Ruppert, alpha = 35 deg, eps = " + std::to_string(eps))));
+      HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Ruppert_corner_zoom.svg",
+          HP::target_angle(criteria.alpha(), HP::title(std::string("zoom x6 on the lopped 5 degree corner"),
+                           HP::zoom(6.0, HP::view_center(std::make_pair(0.25, -0.2))))));
+      HM::write_central_angle_histogram_svg(cdt, "hyperbolic_mesh_Ruppert_histogram.svg",
+          HP::marks(std::vector<double>{35.0}, HP::title(std::string("Ruppert: central angles of the shortest edges"))));
     }
     // generalized Chew: central angle >= theta*(r), circumradius <= eps
     {
@@ -106,10 +109,12 @@ int main(int argc, char** argv)
           cdt, criteria, HM::parameters::seeds(in.seeds));
       std::cout << "Chew:    " << st << "\n";
       const double theta = criteria.minimum_central_angle();
-      HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Chew.svg", theta, 2 * pi / 3,
-                                    "generalized Chew, eps = " + std::to_string(eps));
-      HM::write_central_angle_histogram_svg(cdt, "hyperbolic_mesh_Chew_histogram.svg", {theta * 180 / pi},
-                                            "Chew: central angles of the shortest edges (line: theta*(eps))");
+      namespace HP = HM::parameters;
+      HM::write_hyperbolic_mesh_svg(cdt, "hyperbolic_mesh_Chew.svg",
+          HP::target_angle(theta, HP::title("generalized Chew, eps = " + std::to_string(eps))));
+      HM::write_central_angle_histogram_svg(cdt, "hyperbolic_mesh_Chew_histogram.svg",
+          HP::marks(std::vector<double>{theta * 180 / pi},
+                    HP::title(std::string("Chew: central angles of the shortest edges (line: theta*(eps))"))));
     }
     std::cout << "wrote hyperbolic_mesh_{Ruppert,Chew}.svg and *_histogram.svg\n";
   } catch(const std::exception& e) {

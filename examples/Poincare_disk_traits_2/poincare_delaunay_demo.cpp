@@ -6,10 +6,10 @@
 //    faces whose circumcircle leaves the disk (horocycle / hypercycle "circles") are shaded.
 // 2. Constrained_Delaunay_triangulation_2 with geodesic constraints: a regular hyperbolic heptagon and two
 //    crossing geodesic chords (Exact_predicates_tag: split at their geodesic intersection).
-// 3. refine_Delaunay_mesh_2 with Poincare_disk_mesh_criteria_2 inside the heptagon.
+// 3. refine_Delaunay_mesh_2 with Hyperbolic_Ruppert_mesh_criteria_2 inside the heptagon.
 // Writes poincare_delaunay.svg, poincare_cdt.svg, poincare_mesh.svg.
 #include <CGAL/Poincare_disk_traits_2.h>
-#include <CGAL/Poincare_disk_mesh_criteria_2.h>
+#include <CGAL/Hyperbolic_mesh_criteria_2.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -24,6 +24,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+namespace SP = CGAL::Poincare_disk_svg::parameters;  // the options of the SVG writer
 
 typedef CGAL::Poincare_disk_traits_2<> Gt;
 typedef Gt::Point_2 Point;
@@ -67,7 +69,7 @@ static void draw_edges(CGAL::Poincare_disk_svg_writer& svg, const Tr& tr)
   for(auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
     const Point& p = e->first->vertex(tr.cw(e->second))->point();
     const Point& q = e->first->vertex(tr.ccw(e->second))->point();
-    svg.add_geodesic_segment(p, q, "#1f4e79", 0.6);
+    svg.add_geodesic_segment(p, q, SP::stroke("#1f4e79", SP::stroke_width(0.6)));
   }
 }
 
@@ -92,13 +94,14 @@ int main(int argc, char** argv)
     for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
       const Point &a = f->vertex(0)->point(), &b = f->vertex(1)->point(), &c = f->vertex(2)->point();
       if(gt.is_Delaunay_hyperbolic_2_object()(a, b, c)) ++compact;
-      else { ++non_compact; svg1.add_geodesic_polygon(face_xy(a, b, c), "#f4c430", "none", 0, 0.6); }
+      else { ++non_compact; svg1.add_geodesic_polygon(face_xy(a, b, c), SP::fill("#f4c430", SP::stroke_width(0, SP::fill_opacity(0.6)))); }
     }
     draw_edges(svg1, dt);
-    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) svg1.add_point(v->point(), "#c00", 1.6);
+    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+      svg1.add_point(v->point(), SP::fill("#c00", SP::radius(1.6)));
     svg1.add_text(10, 20, "Delaunay_triangulation_2<Poincare_disk_traits_2<>>: " + std::to_string(dt.number_of_vertices()) +
                   " vertices, " + std::to_string(compact) + " faces with compact circumcircle, " +
-                  std::to_string(non_compact) + " without (shaded)", 12);
+                  std::to_string(non_compact) + " without (shaded)", SP::font_size(12));
     svg1.write(out + "poincare_delaunay.svg");
     std::cout << "Delaunay: " << dt.number_of_vertices() << " vertices, " << dt.number_of_faces() << " faces ("
               << compact << " compact, " << non_compact << " horocycle/hypercycle), valid: " << dt.is_valid() << "\n";
@@ -116,8 +119,8 @@ int main(int argc, char** argv)
     draw_edges(svg2, cdt);
     for(auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e)
       svg2.add_geodesic_segment(e->first->vertex(cdt.cw(e->second))->point(),
-                                e->first->vertex(cdt.ccw(e->second))->point(), "#c00000", 2.0);
-    svg2.add_text(10, 20, "Constrained_Delaunay_triangulation_2 with geodesic constraints (red)", 12);
+                                e->first->vertex(cdt.ccw(e->second))->point(), SP::stroke("#c00000", SP::stroke_width(2.0)));
+    svg2.add_text(10, 20, "Constrained_Delaunay_triangulation_2 with geodesic constraints (red)", SP::font_size(12));
     svg2.write(out + "poincare_cdt.svg");
     std::cout << "CDT: " << cdt.number_of_vertices() << " vertices (crossing chords split at their geodesic "
               << "intersection), valid: " << cdt.is_valid() << "\n";
@@ -127,7 +130,7 @@ int main(int argc, char** argv)
     CDT mesh;
     for(std::size_t i = 0; i < hept.size(); ++i) mesh.insert_constraint(hept[i], hept[(i + 1) % hept.size()]);
     const double angle = 2 * 20.7 * M_PI / 180, radius = 0.6;
-    CGAL::refine_Delaunay_mesh_2(mesh, CGAL::Poincare_disk_mesh_criteria_2<CDT>(angle, radius));
+    CGAL::refine_Delaunay_mesh_2(mesh, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(angle, radius));
     CGAL::Poincare_disk_svg_writer svg3;
     svg3.add_unit_circle();
     std::size_t in_domain = 0;
@@ -135,10 +138,10 @@ int main(int argc, char** argv)
       if(!f->is_in_domain()) continue;
       ++in_domain;
       svg3.add_geodesic_polygon(face_xy(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()),
-                                "#dbe9f6", "#1f4e79", 0.5);
+                                SP::fill("#dbe9f6", SP::stroke("#1f4e79", SP::stroke_width(0.5))));
     }
-    svg3.add_text(10, 20, "refine_Delaunay_mesh_2 + Poincare_disk_mesh_criteria_2 (central angle >= 41.4 deg, "
-                          "circumradius <= 0.6): " + std::to_string(in_domain) + " triangles", 12);
+    svg3.add_text(10, 20, "refine_Delaunay_mesh_2 + Hyperbolic_Ruppert_mesh_criteria_2 (central angle >= 41.4 deg, "
+                          "circumradius <= 0.6): " + std::to_string(in_domain) + " triangles", SP::font_size(12));
     svg3.write(out + "poincare_mesh.svg");
     std::cout << "Mesh_2: " << mesh.number_of_vertices() << " vertices, " << in_domain
               << " triangles in the heptagon, valid: " << mesh.is_valid() << "\n";

@@ -13,6 +13,7 @@
 #include <CGAL/Poincare_disk_isometry_2.h>
 #include <CGAL/Poincare_disk_traits_2/internal/checks.h>
 #include <CGAL/Poincare_disk_traits_2/internal/constructions.h>
+#include <CGAL/Poincare_disk_traits_2/internal/construction_functors.h>
 #include <CGAL/Poincare_disk_traits_2/internal/exponential_map.h>
 #include <CGAL/Poincare_disk_traits_2/internal/model_conversions.h>
 #include <CGAL/Poincare_disk_traits_2/internal/filtered_evaluation.h>
@@ -554,62 +555,15 @@ public:
 
   /// Hyperbolic circumcenter of p, q, r; throws `Poincare_disk_domain_error` if the circumcircle is not compact
   /// (check `Is_Delaunay_hyperbolic` first). Needs a square root (rounded unless FT has an exact one).
-  class Construct_hyperbolic_circumcenter_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
-    {
-      check(p, "Construct_hyperbolic_circumcenter_2"); check(q, "Construct_hyperbolic_circumcenter_2");
-      check(r, "Construct_hyperbolic_circumcenter_2");
-      if(!Is_Delaunay_hyperbolic()(p, q, r))
-        throw Poincare_disk_domain_error("Construct_hyperbolic_circumcenter_2: the circumcircle is not compact "
-                                         "(horocycle or hypercycle): no hyperbolic circumcenter");
-      const Poincare_disk_internal::Circle_coefficients<FT> cc(p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
-      const FT s = cc.A + cc.G;
-      const FT den = Poincare_disk_internal::sqrt_of(cc.delta()) + CGAL::abs(s);
-      const FT f = (s > FT(0) ? FT(-1) : FT(1)) / den;
-      return Point_2(f * cc.B, f * cc.C);
-    }
-  };
+  typedef Poincare_disk_internal::Construct_hyperbolic_circumcenter_2<Self> Construct_hyperbolic_circumcenter_2;
 
   /// `Construct_circumcenter_2` of the triangulation / mesher concepts: the hyperbolic circumcenter when the
   /// circumcircle is compact; otherwise (no hyperbolic centre exists) the hyperbolic midpoint of the longest
   /// edge, which is where `refine_Delaunay_mesh_2` should split such a face. Documented limit.
-  class Construct_circumcenter_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
-    {
-      if(Is_Delaunay_hyperbolic()(p, q, r)) return Construct_hyperbolic_circumcenter_2()(p, q, r);
-      Compare_hyperbolic_distance_2 cmp;
-      // longest edge
-      const Point_2 *a = &p, *b = &q;
-      if(cmp(q, r, *a, *b) == LARGER) { a = &q; b = &r; }
-      if(cmp(r, p, *a, *b) == LARGER) { a = &r; b = &p; }
-      return Construct_hyperbolic_midpoint_2()(*a, *b);
-    }
-    Point_2 operator()(const Point_2& p, const Point_2& q) const { return Construct_hyperbolic_midpoint_2()(p, q); }
-  };
+  typedef Poincare_disk_internal::Construct_circumcenter_2<Self> Construct_circumcenter_2;
 
   /// Hyperbolic midpoint of the geodesic segment pq: the normalized sum of the hyperboloid lifts.
-  class Construct_hyperbolic_midpoint_2
-  {
-  public:
-    typedef Point_2 result_type;
-    Point_2 operator()(const Point_2& p, const Point_2& q) const
-    {
-      check(p, "Construct_hyperbolic_midpoint_2"); check(q, "Construct_hyperbolic_midpoint_2");
-      using namespace Poincare_disk_internal;
-      const FT np = lift_n(p.x(), p.y()), nq = lift_n(q.x(), q.y());
-      // S = (1-|p|^2)(1-|q|^2) (L(p) + L(q))
-      const FT sx = FT(2) * (nq * p.x() + np * q.x()), sy = FT(2) * (nq * p.y() + np * q.y());
-      const FT st = nq * lift_w(p.x(), p.y()) + np * lift_w(q.x(), q.y());
-      const FT den = sqrt_of(st * st - sx * sx - sy * sy) + st;
-      return Point_2(sx / den, sy / den);
-    }
-  };
+  typedef Poincare_disk_internal::Construct_hyperbolic_midpoint_2<Self> Construct_hyperbolic_midpoint_2;
 
   /// `Construct_midpoint_2` of the triangulation / mesher concepts is the hyperbolic midpoint, so that
   /// `refine_Delaunay_mesh_2` splits constrained edges on their geodesic.
@@ -619,66 +573,12 @@ public:
   typedef Poincare_disk_internal::Construct_hyperbolic_point_on_segment_2<Kernel> Construct_hyperbolic_point_on_segment_2;
 
   /// The geodesic segment from p to q (an arc orthogonal to the unit circle, or a piece of a diameter).
-  class Construct_hyperbolic_segment_2
-  {
-  public:
-    typedef Hyperbolic_segment_2 result_type;
-    Hyperbolic_segment_2 operator()(const Point_2& p, const Point_2& q) const
-    {
-      check(p, "Construct_hyperbolic_segment_2"); check(q, "Construct_hyperbolic_segment_2");
-      return Hyperbolic_segment_2(p, q);
-    }
-  };
+  typedef Poincare_disk_internal::Construct_hyperbolic_segment_2<Self> Construct_hyperbolic_segment_2;
 
   /// Hyperbolic bisectors (Voronoi edges): (p, q) the whole geodesic line equidistant from p and q, between its
   /// two ideal endpoints; (p, q, r) the ray from the circumcenter of pqr to the ideal point on the side of the
   /// geodesic pq away from r; (p, q, r, s) the segment between the circumcenters of pqr and of psq.
-  class Construct_hyperbolic_bisector_2
-  {
-  public:
-    typedef Hyperbolic_segment_2 result_type;
-    Hyperbolic_segment_2 operator()(const Point_2& p, const Point_2& q) const
-    {
-      const std::pair<Point_2, Point_2> e = ideal_endpoints(p, q);
-      return Hyperbolic_segment_2(e.first, e.second);
-    }
-    Hyperbolic_segment_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
-    {
-      const Point_2 c = Construct_hyperbolic_circumcenter_2()(p, q, r);
-      const std::pair<Point_2, Point_2> e = ideal_endpoints(p, q);
-      // keep the ideal end on the other side of the geodesic pq than r
-      const Orientation orr = Orientation_2()(p, q, r);
-      const Orientation oe = Eval::eval(klein_poly, p.x(), p.y(), q.x(), q.y(), e.first.x(), e.first.y());
-      return Hyperbolic_segment_2(c, oe != orr ? e.first : e.second);
-    }
-    Hyperbolic_segment_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r, const Point_2& s) const
-    {
-      return Hyperbolic_segment_2(Construct_hyperbolic_circumcenter_2()(p, q, r),
-                                  Construct_hyperbolic_circumcenter_2()(p, s, q));
-    }
-    /// the two points of the unit circle on the bisector of p and q, in counterclockwise order seen from p
-    static std::pair<Point_2, Point_2> ideal_endpoints(const Point_2& p, const Point_2& q)
-    {
-      check(p, "Construct_hyperbolic_bisector_2"); check(q, "Construct_hyperbolic_bisector_2");
-      using namespace Poincare_disk_internal;
-      // { z : a |z|^2 - 2 z.v + a = 0 },  a = n_q - n_p, v = n_q p - n_p q; on |z| = 1: z.v = a
-      const FT np = lift_n(p.x(), p.y()), nq = lift_n(q.x(), q.y());
-      const FT a = nq - np, vx = nq * p.x() - np * q.x(), vy = nq * p.y() - np * q.y();
-      const FT v2 = vx * vx + vy * vy;
-      const FT h = sqrt_of(v2 - a * a);
-      // z = (a v +- h v_perp) / |v|^2, v_perp = (-vy, vx)
-      const Point_2 z1((a * vx - h * vy) / v2, (a * vy + h * vx) / v2);
-      const Point_2 z2((a * vx + h * vy) / v2, (a * vy - h * vx) / v2);
-      return std::make_pair(z1, z2);
-    }
-  private:
-    struct Klein_poly {
-      template <class NT>
-      auto operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
-      { return CGAL::sign(Poincare_disk_internal::klein_orientation_det(px, py, qx, qy, rx, ry)); }
-    };
-    static constexpr Klein_poly klein_poly{};
-  };
+  typedef Poincare_disk_internal::Construct_hyperbolic_bisector_2<Self> Construct_hyperbolic_bisector_2;
 
   /// The Euclidean circle that is the hyperbolic circle of centre c and radius r, with the radius given as
   /// `sinh2_half_radius = sinh^2(r/2)` (rational: exact on exact FT), or as the radius itself (rounded).
@@ -693,38 +593,7 @@ public:
   /// `Constrained_triangulation_2` with `Exact_predicates_tag` asks for it: the intersection of the two Klein
   /// straight lines, mapped back to Poincare coordinates (one square root: rounded unless FT has an exact one).
   /// Empty when the segments do not cross (decided with the exact `Orientation_2`).
-  class Intersect_2
-  {
-  public:
-    typedef boost::optional<boost::variant<Point_2, Segment_2> > result_type;
-    result_type operator()(const Segment_2& s1, const Segment_2& s2) const
-    {
-      const Point_2 &a = s1.source(), &b = s1.target(), &c = s2.source(), &d = s2.target();
-      Orientation_2 o;
-      const Orientation abc = o(a, b, c), abd = o(a, b, d), cda = o(c, d, a), cdb = o(c, d, b);
-      if(abc == COLLINEAR && abd == COLLINEAR) {
-        // on one geodesic: CGAL's CDT only asks for crossings, overlaps are handled combinatorially
-        return result_type();
-      }
-      if(abc == abd || cda == cdb) return result_type(); // no crossing
-      if(abc == COLLINEAR) return result_type(boost::variant<Point_2, Segment_2>(c));
-      if(abd == COLLINEAR) return result_type(boost::variant<Point_2, Segment_2>(d));
-      if(cda == COLLINEAR) return result_type(boost::variant<Point_2, Segment_2>(a));
-      if(cdb == COLLINEAR) return result_type(boost::variant<Point_2, Segment_2>(b));
-      return result_type(boost::variant<Point_2, Segment_2>(intersection_point(a, b, c, d)));
-    }
-    /// intersection of the geodesic lines ab and cd (precondition: they cross inside the disk)
-    static Point_2 intersection_point(const Point_2& a, const Point_2& b, const Point_2& c, const Point_2& d)
-    {
-      Construct_Klein_point_2 k;
-      const Point_2 ka = k(a), kb = k(b), kc = k(c), kd = k(d);
-      // ka + t (kb - ka) on the line kc kd
-      const FT ux = kb.x() - ka.x(), uy = kb.y() - ka.y(), vx = kd.x() - kc.x(), vy = kd.y() - kc.y();
-      const FT den = ux * vy - uy * vx;
-      const FT t = ((kc.x() - ka.x()) * vy - (kc.y() - ka.y()) * vx) / den;
-      return Construct_point_from_Klein_2()(Point_2(ka.x() + t * ux, ka.y() + t * uy));
-    }
-  };
+  typedef Poincare_disk_internal::Intersect_2<Self> Intersect_2;
 
   // ---------------------------------------------------------------- models
 

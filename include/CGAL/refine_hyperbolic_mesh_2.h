@@ -13,6 +13,26 @@
 #include <CGAL/Hyperbolic_mesh_criteria_2.h>
 
 namespace CGAL {
+namespace Hyperbolic_mesh_2 {
+namespace internal {
+
+// The one implementation of the entry points: the algorithm is the criteria's Refinement_policy.
+template <class CDT, class Criteria>
+Mesh_statistics refine_hyperbolic_mesh(CDT& cdt, const Criteria& criteria, const Mesh_parameters<typename CDT::Point>& prm)
+{
+  Refiner<CDT, Criteria> r(cdt, criteria, prm);
+  return r.run();
+}
+
+// Options given as named parameters: read into the Mesh_parameters (the setters check the ranges).
+template <class CDT, class Criteria, class NP>
+Mesh_statistics refine_hyperbolic_mesh_np(CDT& cdt, const Criteria& criteria, const NP& np)
+{
+  return refine_hyperbolic_mesh(cdt, criteria, mesh_parameters_from_named_parameters<typename CDT::Point>(np));
+}
+
+} // namespace internal
+} // namespace Hyperbolic_mesh_2
 
 /*!
   \ingroup PkgHyperbolicMesh2Ref
@@ -53,12 +73,9 @@ namespace CGAL {
 */
 template <class CDT>
 Hyperbolic_mesh_2::Mesh_statistics
-refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>& criteria,
+refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_Ruppert_mesh_criteria_2<CDT>& criteria,
                                  const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters)
-{
-  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_mesh_criteria_2<CDT>, false> r(cdt, criteria, parameters);
-  return r.run();
-}
+{ return Hyperbolic_mesh_2::internal::refine_hyperbolic_mesh(cdt, criteria, parameters); }
 
 /*!
   \ingroup PkgHyperbolicMesh2Ref
@@ -77,12 +94,9 @@ refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>
 */
 template <class CDT, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Hyperbolic_mesh_2::Mesh_statistics
-refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_mesh_criteria_2<CDT>& criteria,
+refine_hyperbolic_Ruppert_mesh_2(CDT& cdt, const Hyperbolic_Ruppert_mesh_criteria_2<CDT>& criteria,
                                  const CGAL_NP_CLASS& np = parameters::default_values())
-{
-  return refine_hyperbolic_Ruppert_mesh_2(
-      cdt, criteria, Hyperbolic_mesh_2::internal::mesh_parameters_from_named_parameters<typename CDT::Point>(np));
-}
+{ return Hyperbolic_mesh_2::internal::refine_hyperbolic_mesh_np(cdt, criteria, np); }
 
 /*!
   \ingroup PkgHyperbolicMesh2Ref
@@ -106,10 +120,7 @@ template <class CDT>
 Hyperbolic_mesh_2::Mesh_statistics
 refine_hyperbolic_Chew_mesh_2(CDT& cdt, const Hyperbolic_Chew_mesh_criteria_2<CDT>& criteria,
                               const Hyperbolic_mesh_2::Mesh_parameters<typename CDT::Point>& parameters)
-{
-  Hyperbolic_mesh_2::internal::Refiner<CDT, Hyperbolic_Chew_mesh_criteria_2<CDT>, true> r(cdt, criteria, parameters);
-  return r.run();
-}
+{ return Hyperbolic_mesh_2::internal::refine_hyperbolic_mesh(cdt, criteria, parameters); }
 
 /*!
   \ingroup PkgHyperbolicMesh2Ref
@@ -120,10 +131,7 @@ template <class CDT, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Hyperbolic_mesh_2::Mesh_statistics
 refine_hyperbolic_Chew_mesh_2(CDT& cdt, const Hyperbolic_Chew_mesh_criteria_2<CDT>& criteria,
                               const CGAL_NP_CLASS& np = parameters::default_values())
-{
-  return refine_hyperbolic_Chew_mesh_2(
-      cdt, criteria, Hyperbolic_mesh_2::internal::mesh_parameters_from_named_parameters<typename CDT::Point>(np));
-}
+{ return Hyperbolic_mesh_2::internal::refine_hyperbolic_mesh_np(cdt, criteria, np); }
 
 /*!
   \ingroup PkgHyperbolicMesh2Ref

@@ -11,6 +11,7 @@
 #include <CGAL/Exact_rational.h>
 
 #include "cgal_hc_test.h"
+#include "hyperbolic_mesh_checks.h"
 
 #include <cmath>
 #include <random>
@@ -24,7 +25,7 @@ typedef CGAL::Delaunay_mesh_face_base_2<Gt> Fb;
 typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
 typedef CGAL::Constrained_Delaunay_triangulation_2<Gt, Tds, CGAL::Exact_predicates_tag> CDT;
 typedef Gt::Point_2 Point;
-typedef CGAL::Hyperbolic_mesh_criteria_2<CDT> Ruppert_criteria;
+typedef CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT> Ruppert_criteria;
 typedef CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT> Chew_criteria;
 typedef CGAL::Hyperbolic_mesh_2::Mesh_statistics Stats;
 typedef CGAL::Hyperbolic_mesh_2::Mesh_parameters<Point> Params;
@@ -136,53 +137,10 @@ static void build(CDT& cdt, const Pslg& g) { HM::insert_geodesic_pslg(cdt, g.poi
 // ------------------------------------------------------------------ independent exact geometry
 static Q qx(const Point& p) { return Q(p.x()); }
 static Q qy(const Point& p) { return Q(p.y()); }
-// A(p, q) = sinh^2(d/2) = |p - q|^2 / ((1 - |p|^2)(1 - |q|^2))
-static Q A(const Point& p, const Point& q)
-{
-  const Q dx = qx(p) - qx(q), dy = qy(p) - qy(q);
-  return (dx * dx + dy * dy) / ((1 - qx(p) * qx(p) - qy(p) * qy(p)) * (1 - qx(q) * qx(q) - qy(q) * qy(q)));
-}
-struct Lift { Q x, y, t; };
-static Lift lift(const Point& p)
-{
-  const Q n = 1 - qx(p) * qx(p) - qy(p) * qy(p);
-  return Lift{2 * qx(p) / n, 2 * qy(p) / n, (1 + qx(p) * qx(p) + qy(p) * qy(p)) / n};
-}
-// cosh^2 of the hyperbolic circumradius via the plane through the three hyperboloid lifts; false if the
-// circumcircle is not compact (the plane's Minkowski normal is not timelike).
-static bool cosh2_circumradius(const Point& p, const Point& q, const Point& r, Q& c2)
-{
-  const Lift a = lift(p), b = lift(q), c = lift(r);
-  const Q ux = b.x - a.x, uy = b.y - a.y, ut = b.t - a.t, vx = c.x - a.x, vy = c.y - a.y, vt = c.t - a.t;
-  // Euclidean normal n of the plane; Minkowski normal N = (n_x, n_y, -n_t): <N, X> = n . X
-  const Q nx = uy * vt - ut * vy, ny = ut * vx - ux * vt, nt = ux * vy - uy * vx;
-  const Q NN = nx * nx + ny * ny - nt * nt;
-  if(!(NN < 0)) return false;
-  const Q nl = nx * a.x + ny * a.y + nt * a.t;
-  c2 = nl * nl / (-NN);
-  return true;
-}
-static Q min_A(const Point& p, const Point& q, const Point& r) { return std::min({A(p, q), A(q, r), A(r, p)}); }
-
-// Ruppert criteria: sin^2(alpha/2) = A_min / sinh^2 h >= B, and h <= eps.
-static bool meets_Ruppert(const Point& p, const Point& q, const Point& r, double B, double eps)
-{
-  Q c2;
-  if(!cosh2_circumradius(p, q, r, c2)) return false;
-  if(!(min_A(p, q, r) >= Q(B) * (c2 - 1))) return false;
-  if(std::isfinite(eps)) { const double ce = std::cosh(eps * (1 + 1e-12)); if(!(c2 <= Q(ce * ce))) return false; }
-  return true;
-}
-// Chew criteria: shortest edge >= circumradius (cosh d_min = 1 + 2 A_min), h <= eps.
-static bool meets_Chew(const Point& p, const Point& q, const Point& r, double eps)
-{
-  Q c2;
-  if(!cosh2_circumradius(p, q, r, c2)) return false;
-  const Q cd = 1 + 2 * min_A(p, q, r);
-  if(!(cd * cd >= c2)) return false;
-  if(std::isfinite(eps)) { const double ce = std::cosh(eps * (1 + 1e-12)); if(!(c2 <= Q(ce * ce))) return false; }
-  return true;
-}
+// independent exact geometry shared with the other tests and the fuzz target (test/common/hyperbolic_mesh_checks.h)
+static Q A(const Point& p, const Point& q) { return hyperbolic_mesh_checks::A<Q>(p, q); }
+using hyperbolic_mesh_checks::meets_Ruppert;
+using hyperbolic_mesh_checks::meets_Chew;
 // Euclidean orientation and in-circle on Poincare coordinates (exact)
 static int orient_e(const Point& p, const Point& q, const Point& r)
 {
@@ -580,6 +538,36 @@ CGAL_HC_TEST_CASE(svg_output)
     CGAL_HC_CHECK(paths >= HM::central_angles(cdt).size());
   }
   CGAL_HC_CHECK_THROWS(HM::write_hyperbolic_mesh_svg(cdt, "/nonexistent_dir/x.svg"), std::runtime_error);
+  // issue 8: the named-parameter writers write the same files as the (deprecated) positional ones
+  if(ok) {
+    auto read = [](const std::string& f) {
+      std::ifstream in(f);
+      return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    namespace HP = HM::parameters;
+    const std::string f3 = f1 + ".np.svg", f4 = f2 + ".np.svg";
+    HM::write_hyperbolic_mesh_svg(cdt, f1, deg(40), deg(100), "title", 600, 3.0, 0.1, -0.2);
+    HM::write_hyperbolic_mesh_svg(cdt, f3, HP::target_angle(deg(40), HP::good_angle(deg(100), HP::title(std::string("title"),
+                                      HP::image_size(600.0, HP::zoom(3.0, HP::view_center(std::make_pair(0.1, -0.2))))))));
+    CGAL_HC_CHECK(read(f1).size() > 1000 && read(f1) == read(f3));
+    HM::write_central_angle_histogram_svg(cdt, f2, {40.0, 50.0}, "h", 30);
+    HM::write_central_angle_histogram_svg(cdt, f4, HP::bins(30, HP::title(std::string("h"), HP::marks(std::vector<double>{40.0, 50.0}))));
+    CGAL_HC_CHECK(read(f2).size() > 500 && read(f2) == read(f4));
+    // and the picture writer of the traits package, drawing call by drawing call
+    namespace SP = CGAL::Poincare_disk_svg::parameters;
+    CGAL::Poincare_disk_svg_writer w1(500, 2.0, 0.1, 0.0), w2(SP::image_size(500.0, SP::zoom(2.0, SP::view_center(std::make_pair(0.1, 0.0)))));
+    const Point p(0.1, 0.2), q(-0.3, 0.4);
+    w1.add_unit_circle("#111", 2.0, "#eee"); w2.add_unit_circle(SP::stroke("#111", SP::stroke_width(2.0, SP::fill("#eee"))));
+    w1.add_point(p, "#00f", 3.0); w2.add_point(p, SP::fill("#00f", SP::radius(3.0)));
+    w1.add_geodesic_segment(p, q, "#0a0", 1.5); w2.add_geodesic_segment(p, q, SP::stroke("#0a0", SP::stroke_width(1.5)));
+    w1.add_geodesic_polygon({0.1, 0.2, -0.3, 0.4, 0.0, -0.5}, "#abc", "#000", 0.7, 0.5);
+    w2.add_geodesic_polygon({0.1, 0.2, -0.3, 0.4, 0.0, -0.5},
+                            SP::fill("#abc", SP::stroke("#000", SP::stroke_width(0.7, SP::fill_opacity(0.5)))));
+    w1.add_euclidean_circle(0.1, 0.1, 0.2, "#f00", 0.4); w2.add_euclidean_circle(0.1, 0.1, 0.2, SP::stroke("#f00", SP::stroke_width(0.4)));
+    w1.add_text(5, 6, "x<y", 11, "#333"); w2.add_text(5, 6, "x<y", SP::font_size(11.0, SP::fill("#333")));
+    w1.write(f3); w2.write(f4);
+    CGAL_HC_CHECK(read(f3).size() > 300 && read(f3) == read(f4));
+  }
   const std::vector<double> a = HM::central_angles(cdt);
   CGAL_HC_CHECK(!a.empty());
   CGAL_HC_CHECK(*std::min_element(a.begin(), a.end()) >= deg(40) - 1e-9);

@@ -4,14 +4,19 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Poincare_disk_mesh_criteria_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 
 #include "cgal_hc_test.h"
+#include "hyperbolic_mesh_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -30,46 +35,7 @@ typedef HM::Mesh_parameters<Point> Params;
 const double PI = std::acos(-1.0);
 double deg(double d) { return d * PI / 180; }
 
-// Hyperboloid lift L(z) = (2x, 2y, 1 + |z|^2) / (1 - |z|^2), exact.
-struct Lift { Q x, y, t; };
-Lift lift(const Point& p)
-{
-  const Q x(p.x()), y(p.y()), n = 1 - x * x - y * y;
-  return Lift{2 * x / n, 2 * y / n, (1 + x * x + y * y) / n};
-}
-// Klein orientation of p, q, r (the triangulation's orientation), exact.
-int orient_klein(const Point& p, const Point& q, const Point& r)
-{
-  const Lift a = lift(p), b = lift(q), c = lift(r);
-  // central projection to the Klein plane t = 1: orientation of (x/t, y/t); t > 0
-  const Q d = (b.x / b.t - a.x / a.t) * (c.y / c.t - a.y / a.t) - (b.y / b.t - a.y / a.t) * (c.x / c.t - a.x / a.t);
-  return CGAL::sign(d);
-}
-// number of unconstrained edges between two finite faces that fail the exact local Delaunay test
-std::size_t non_Delaunay_edges(const CDT& cdt)
-{
-  std::size_t bad = 0;
-  for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-    if(cdt.is_constrained(*e)) continue;
-    const CDT::Face_handle f = e->first, g = f->neighbor(e->second);
-    if(cdt.is_infinite(f) || cdt.is_infinite(g)) continue;
-    const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
-    const Point& s = cdt.mirror_vertex(f, e->second)->point();
-    // s strictly inside the circle (or horocycle / hypercycle) of p q r: the Euclidean in-circle determinant of
-    // the Poincare coordinates (the side of the hyperboloid lift of s w.r.t. the plane of the lifts of p, q, r)
-    // times the Klein orientation of p q r
-    const Q ax = Q(p.x()) - Q(s.x()), ay = Q(p.y()) - Q(s.y()), bx = Q(q.x()) - Q(s.x()), by = Q(q.y()) - Q(s.y()),
-            cx = Q(r.x()) - Q(s.x()), cy = Q(r.y()) - Q(s.y());
-    const Q aw = ax * ax + ay * ay, bw = bx * bx + by * by, cw = cx * cx + cy * cy;
-    const Q det = ax * (by * cw - bw * cy) - ay * (bx * cw - bw * cx) + aw * (bx * cy - by * cx);
-    if(CGAL::sign(det) * orient_klein(p, q, r) > 0) ++bad;
-  }
-  return bad;
-}
-
-} // namespace
-
-namespace {
+using hyperbolic_mesh_checks::non_Delaunay_edges;
 
 // number of domain faces with a vertex more than 1e-9 outside the hyperbolic convex hull of `input` (the
 // Euclidean hull of the Klein images): a domain that leaked into the frame beyond the hull
@@ -147,34 +113,12 @@ CGAL_HC_TEST_CASE(issue12_Ruppert_point_clouds_stay_Delaunay)
 
 namespace {
 
-// exact Ruppert criteria (independent): sin^2(alpha/2) = A_min / sinh^2 h >= sin^2(alpha/2), h <= eps
-Q A(const Point& p, const Point& q)
-{
-  const Q px(p.x()), py(p.y()), qx(q.x()), qy(q.y());
-  const Q dx = px - qx, dy = py - qy;
-  return (dx * dx + dy * dy) / ((1 - px * px - py * py) * (1 - qx * qx - qy * qy));
-}
-// cosh^2 of the circumradius from the plane of the three lifts; false if not compact
-bool cosh2_circumradius(const Point& p, const Point& q, const Point& r, Q& c2)
-{
-  const Lift a = lift(p), b = lift(q), c = lift(r);
-  const Q ux = b.x - a.x, uy = b.y - a.y, ut = b.t - a.t, vx = c.x - a.x, vy = c.y - a.y, vt = c.t - a.t;
-  const Q nx = uy * vt - ut * vy, ny = ut * vx - ux * vt, nt = ux * vy - uy * vx;
-  const Q NN = nx * nx + ny * ny - nt * nt;
-  if(!(NN < 0)) return false;
-  const Q nl = nx * a.x + ny * a.y + nt * a.t;
-  c2 = nl * nl / (-NN);
-  return true;
-}
+// exact Ruppert criteria (independent, test/common/hyperbolic_mesh_checks.h): sin^2(alpha/2) A_min / sinh^2 h test, h <= eps
 bool meets_Ruppert(const CDT::Face_handle f, double alpha, double eps)
 {
-  const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
-  Q c2;
-  if(!cosh2_circumradius(p, q, r, c2)) return false;
   const double s = std::sin(alpha / 2);
-  if(!(std::min({A(p, q), A(q, r), A(r, p)}) >= Q(s * s) * (c2 - 1))) return false;
-  if(std::isfinite(eps)) { const double ce = std::cosh(eps * (1 + 1e-12)); if(!(c2 <= Q(ce * ce))) return false; }
-  return true;
+  return hyperbolic_mesh_checks::meets_Ruppert(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                                               s * s, eps);
 }
 std::size_t faces_failing_Ruppert(const CDT& cdt, double alpha, double eps)
 {
@@ -293,8 +237,8 @@ CGAL_HC_TEST_CASE(issue8_central_angles_of_tiny_good_faces)
       if(!f->is_in_domain()) continue;
       const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
       Q c2;
-      CGAL_HC_CHECK(cosh2_circumradius(p, q, r, c2));
-      const double s2 = CGAL::to_double(std::min({A(p, q), A(q, r), A(r, p)}) / (c2 - 1));
+      CGAL_HC_CHECK(hyperbolic_mesh_checks::cosh2_circumradius(p, q, r, c2));
+      const double s2 = CGAL::to_double(hyperbolic_mesh_checks::min_A<Q>(p, q, r) / (c2 - 1));
       exact_min = std::min(exact_min, 2 * std::asin(std::sqrt(std::min(1.0, s2))));
     }
     CGAL_HC_CHECK_MSG(exact_min >= deg(40) * (1 - 1e-9), exact_min);
@@ -353,4 +297,80 @@ CGAL_HC_TEST_CASE(issue8_Ruppert_criteria_name)
   CDT cdt = triangle_with_angle(60);
   const Stats st = CGAL::refine_hyperbolic_Ruppert_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(deg(40), 0.2));
   CGAL_HC_CHECK_MSG(st.status == HM::Refinement_status::SUCCESS && faces_failing_Ruppert(cdt, deg(40), 0.2) == 0, st);
+}
+
+// Issue 8 (item 5): one criteria family, modelling CGAL's MeshingCriteria_2: `Quality`, `Is_bad` answering
+// CGAL::Mesh_2::Face_badness (a size violation is IMPERATIVELY_BAD), `is_bad_object()`; usable by CGAL's own
+// refine_Delaunay_mesh_2. The outputs of CGAL's mesher are checked with the independent exact criteria above.
+namespace {
+bool meets_Chew(const CDT::Face_handle f, double eps)
+{
+  return hyperbolic_mesh_checks::meets_Chew(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), eps);
+}
+CDT::Face_handle one_face(CDT& cdt, const std::vector<Point>& pts)
+{
+  cdt.clear();
+  cdt.insert(pts.begin(), pts.end());
+  return cdt.finite_faces_begin();
+}
+} // namespace
+
+CGAL_HC_TEST_CASE(issue8_criteria_model_MeshingCriteria_2)
+{
+  typedef CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT> R;
+  typedef CGAL::Hyperbolic_Chew_mesh_criteria_2<CDT> C;
+  namespace M2 = CGAL::Mesh_2;
+  static_assert(std::is_same<decltype(std::declval<const R::Is_bad&>()(std::declval<const CDT::Face_handle&>(),
+                                                                       std::declval<R::Quality&>())),
+                             M2::Face_badness>::value, "");
+  static_assert(std::is_same<decltype(std::declval<const C::Is_bad&>()(std::declval<const C::Quality&>())),
+                             M2::Face_badness>::value, "");
+  static_assert(std::is_same<R::Refinement_policy, HM::Ruppert_policy>::value, "");
+  static_assert(std::is_same<C::Refinement_policy, HM::Chew_policy>::value, "");
+  static_assert(std::is_base_of<R, CGAL::Poincare_disk_mesh_criteria_2<CDT> >::value, "");
+
+  // equilateral face of hyperbolic circumradius 0.5 centred at 0 (central angles 120 degrees, edges longer than
+  // the circumradius), and a flat face (central angle of its shortest edge about 22 degrees)
+  const double t = std::tanh(0.25);
+  const std::vector<Point> equi = {Point(t, 0), Point(t * std::cos(2 * PI / 3), t * std::sin(2 * PI / 3)),
+                                   Point(t * std::cos(4 * PI / 3), t * std::sin(4 * PI / 3))};
+  const std::vector<Point> flat = {Point(-0.1, 0), Point(0.1, 0), Point(0, 0.02)};
+  CDT cdt;
+  R::Quality qe, qf, qs;
+  CDT::Face_handle f = one_face(cdt, equi);
+  CGAL_HC_CHECK(meets_Ruppert(f, deg(40), 0.6) && !meets_Ruppert(f, deg(40), 0.4)); // the oracle agrees
+  CGAL_HC_CHECK(R(deg(40), 0.6).is_bad_object()(f, qe) == M2::NOT_BAD);
+  CGAL_HC_CHECK(R(deg(40), 0.4).is_bad_object()(f, qs) == M2::IMPERATIVELY_BAD);
+  CGAL_HC_CHECK(R(deg(40), 0.4).is_bad_object()(qs) == M2::IMPERATIVELY_BAD);
+  CGAL_HC_CHECK(C(0.6).is_bad_object()(f, qe) == M2::NOT_BAD && meets_Chew(f, 0.6));
+  CGAL_HC_CHECK(C(0.4).is_bad_object()(f, qe) == M2::IMPERATIVELY_BAD && !meets_Chew(f, 0.4));
+  f = one_face(cdt, flat);
+  CGAL_HC_CHECK(!meets_Ruppert(f, deg(40), 2.0) && meets_Ruppert(f, deg(10), 2.0) && !meets_Chew(f, 2.0));
+  CGAL_HC_CHECK(R(deg(40), 2.0).is_bad_object()(f, qf) == M2::BAD);
+  CGAL_HC_CHECK(R(deg(10), 2.0).badness(f) == M2::NOT_BAD);
+  CGAL_HC_CHECK(C(2.0).badness(f) == M2::BAD);
+  CGAL_HC_CHECK(qs < qf && !(qf < qs)); // imperatively bad faces are refined first
+  // CGAL's mesher has no work bound: central angle bounds above 60 degrees are refused there
+  CGAL_HC_CHECK_THROWS(R(deg(61)).is_bad_object(), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(R(deg(120)).is_bad_object(), CGAL::Invalid_option_error);
+
+  // CGAL's refine_Delaunay_mesh_2 with both criteria on a geodesic hexagon
+  const double rh = std::tanh(0.5);
+  for(int chew = 0; chew < 2; ++chew) {
+    CDT mesh;
+    for(int i = 0; i < 6; ++i)
+      mesh.insert_constraint(Point(rh * std::cos(PI * i / 3), rh * std::sin(PI * i / 3)),
+                             Point(rh * std::cos(PI * ((i + 1) % 6) / 3), rh * std::sin(PI * ((i + 1) % 6) / 3)));
+    if(chew) CGAL::refine_Delaunay_mesh_2(mesh, C(0.3));
+    else CGAL::refine_Delaunay_mesh_2(mesh, R(deg(40), 0.3));
+    CGAL_HC_CHECK(mesh.is_valid());
+    CGAL_HC_CHECK(non_Delaunay_edges(mesh) == 0);
+    std::size_t in = 0, failing = 0;
+    for(auto g = mesh.finite_faces_begin(); g != mesh.finite_faces_end(); ++g) {
+      if(!g->is_in_domain()) continue;
+      ++in;
+      if(chew ? !meets_Chew(g, 0.3) : !meets_Ruppert(g, deg(40), 0.3)) ++failing;
+    }
+    CGAL_HC_CHECK_MSG(in > 20 && failing == 0, (chew ? "Chew: " : "Ruppert: ") << failing << " of " << in);
+  }
 }

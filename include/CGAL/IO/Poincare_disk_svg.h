@@ -6,6 +6,7 @@
 #ifndef CGAL_IO_POINCARE_DISK_SVG_H
 #define CGAL_IO_POINCARE_DISK_SVG_H
 
+#include <CGAL/Hyperbolic_geometry_named_parameters.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
@@ -14,9 +15,54 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_image_size_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_zoom_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_view_center_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_stroke_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_stroke_width_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_fill_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_fill_opacity_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_radius_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(pds_font_size_t)
+
 namespace CGAL {
+namespace Poincare_disk_svg {
+/*!
+  \ingroup PkgPoincareDiskTraits2Ref
+  Named parameters of `Poincare_disk_svg_writer` (and of the SVG writers of the other packages that build on it).
+  Each takes its value and, optionally, the chain it extends (`stroke("#036", stroke_width(1.6))`):
+  - `image_size(double)`: width and height in pixels (default 800); `zoom(double)` (default 1) and
+    `view_center(std::pair<double, double>)` (default (0, 0)): the view shows the square of half-width 1/zoom
+    around the centre;
+  - `stroke(std::string)`, `stroke_width(double)`, `fill(std::string)`, `fill_opacity(double)`: SVG styles;
+  - `radius(double)`: the radius of a point in pixels; `font_size(double)`: text size in pixels.
+*/
+namespace parameters {
+CGAL_HYPERBOLIC_NAMED_PARAMETER(image_size, pds_image_size_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(zoom, pds_zoom_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(view_center, pds_view_center_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(stroke, pds_stroke_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(stroke_width, pds_stroke_width_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(fill, pds_fill_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(fill_opacity, pds_fill_opacity_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(radius, pds_radius_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(font_size, pds_font_size_t)
+} // namespace parameters
+
+namespace internal {
+// the value of a named parameter, or `def` (converted to the default's type)
+template <class T, class NP, class Tag>
+T get(const NP& np, Tag tag, const T& def)
+{
+  return T(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, tag), def));
+}
+template <class NP, class Tag>
+std::string get(const NP& np, Tag tag, const char* def) { return get<std::string>(np, tag, std::string(def)); }
+} // namespace internal
+} // namespace Poincare_disk_svg
 
 /*!
   \ingroup PkgPoincareDiskTraits2Ref
@@ -29,11 +75,68 @@ class Poincare_disk_svg_writer
 public:
   /// `size_px`: width and height of the picture; `zoom`, `(cx, cy)`: the view shows the square of
   /// half-width 1/zoom around (cx, cy).
+  /// \deprecated positional form of the named-parameter constructor below
   explicit Poincare_disk_svg_writer(double size_px = 800, double zoom = 1.0, double cx = 0.0, double cy = 0.0)
     : size_(size_px), zoom_(zoom), cx_(cx), cy_(cy)
   {
     os_.precision(7);
   }
+
+  /// Named parameters (`CGAL::Poincare_disk_svg::parameters`): `image_size`, `zoom`, `view_center`.
+  template <class T, class Tag, class Base>
+  explicit Poincare_disk_svg_writer(const Named_function_parameters<T, Tag, Base>& np)
+    : Poincare_disk_svg_writer(
+          Poincare_disk_svg::internal::get(np, internal_np::pds_image_size_t_v, 800.0),
+          Poincare_disk_svg::internal::get(np, internal_np::pds_zoom_t_v, 1.0),
+          Poincare_disk_svg::internal::get(np, internal_np::pds_view_center_t_v, std::make_pair(0.0, 0.0)).first,
+          Poincare_disk_svg::internal::get(np, internal_np::pds_view_center_t_v, std::make_pair(0.0, 0.0)).second)
+  {}
+
+  /// \name Drawing with named parameters
+  /// The preferred forms: the style as `CGAL::Poincare_disk_svg::parameters` (`stroke`, `stroke_width`, `fill`,
+  /// `fill_opacity`, `radius`, `font_size`), with the defaults of the positional forms, which are deprecated.
+  /// @{
+  template <class T, class Tag, class Base>
+  void add_unit_circle(const Named_function_parameters<T, Tag, Base>& np)
+  {
+    using namespace Poincare_disk_svg::internal;
+    add_unit_circle(get(np, internal_np::pds_stroke_t_v, "#000"), get(np, internal_np::pds_stroke_width_t_v, 1.5),
+                    get(np, internal_np::pds_fill_t_v, "#fcfcff"));
+  }
+  template <class Point_2, class T, class Tag, class Base>
+  void add_point(const Point_2& p, const Named_function_parameters<T, Tag, Base>& np)
+  {
+    using namespace Poincare_disk_svg::internal;
+    add_point(p, get(np, internal_np::pds_fill_t_v, "#c00"), get(np, internal_np::pds_radius_t_v, 2.0));
+  }
+  template <class Point_2, class T, class Tag, class Base>
+  void add_geodesic_segment(const Point_2& p, const Point_2& q, const Named_function_parameters<T, Tag, Base>& np)
+  {
+    using namespace Poincare_disk_svg::internal;
+    add_geodesic_segment(p, q, get(np, internal_np::pds_stroke_t_v, "#036"),
+                         get(np, internal_np::pds_stroke_width_t_v, 1.0));
+  }
+  template <class T, class Tag, class Base>
+  void add_geodesic_polygon(const std::vector<double>& xy, const Named_function_parameters<T, Tag, Base>& np)
+  {
+    using namespace Poincare_disk_svg::internal;
+    add_geodesic_polygon(xy, get(np, internal_np::pds_fill_t_v, "none"), get(np, internal_np::pds_stroke_t_v, "none"),
+                         get(np, internal_np::pds_stroke_width_t_v, 0.5), get(np, internal_np::pds_fill_opacity_t_v, 1.0));
+  }
+  template <class T, class Tag, class Base>
+  void add_euclidean_circle(double x, double y, double r, const Named_function_parameters<T, Tag, Base>& np)
+  {
+    using namespace Poincare_disk_svg::internal;
+    add_euclidean_circle(x, y, r, get(np, internal_np::pds_stroke_t_v, "#080"),
+                         get(np, internal_np::pds_stroke_width_t_v, 1.0));
+  }
+  template <class T, class Tag, class Base>
+  void add_text(double x_px, double y_px, const std::string& text, const Named_function_parameters<T, Tag, Base>& np)
+  {
+    using namespace Poincare_disk_svg::internal;
+    add_text(x_px, y_px, text, get(np, internal_np::pds_font_size_t_v, 14.0), get(np, internal_np::pds_fill_t_v, "#000"));
+  }
+  /// @}
 
   /// the boundary at infinity
   void add_unit_circle(const std::string& stroke = "#000", double width = 1.5, const std::string& fill = "#fcfcff")

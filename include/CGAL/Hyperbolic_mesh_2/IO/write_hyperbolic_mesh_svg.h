@@ -6,6 +6,7 @@
 #ifndef CGAL_HYPERBOLIC_MESH_2_IO_WRITE_HYPERBOLIC_MESH_SVG_H
 #define CGAL_HYPERBOLIC_MESH_2_IO_WRITE_HYPERBOLIC_MESH_SVG_H
 
+#include <CGAL/Hyperbolic_geometry_named_parameters.h>
 #include <CGAL/Hyperbolic_mesh_2/internal/exact_quality.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
 
@@ -17,8 +18,28 @@
 #include <string>
 #include <vector>
 
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hm2_target_angle_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hm2_good_angle_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hm2_title_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hm2_marks_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(hm2_bins_t)
+
 namespace CGAL {
 namespace Hyperbolic_mesh_2 {
+/// \ingroup PkgHyperbolicMesh2Ref
+/// Named parameters of the SVG writers: `target_angle(double)`, `good_angle(double)`, `title(std::string)`,
+/// `marks(std::vector<double>)`, `bins(int)`, and the view of `CGAL::Poincare_disk_svg::parameters`
+/// (`image_size`, `zoom`, `view_center`), also available here.
+namespace parameters {
+CGAL_HYPERBOLIC_NAMED_PARAMETER(target_angle, hm2_target_angle_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(good_angle, hm2_good_angle_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(title, hm2_title_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(marks, hm2_marks_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(bins, hm2_bins_t)
+using CGAL::Poincare_disk_svg::parameters::image_size;
+using CGAL::Poincare_disk_svg::parameters::zoom;
+using CGAL::Poincare_disk_svg::parameters::view_center;
+} // namespace parameters
 
 /// \ingroup PkgHyperbolicMesh2Ref
 /// The central angle (radians) of the shortest edge of every face of the domain, in face iteration order.
@@ -40,6 +61,8 @@ std::vector<double> central_angles(const CDT& cdt)
   get a black outline), other edges thin grey, constrained edges dark and thick. `zoom`, `(cx, cy)`: view of the
   square of half-width 1/zoom around (cx, cy). Throws `std::runtime_error` if the file cannot be written.
   Cost O(n).
+  \deprecated This positional form (up to 9 arguments) is kept for existing callers; prefer the named-parameter
+  overload below.
 */
 template <class CDT>
 void write_hyperbolic_mesh_svg(const CDT& cdt, const std::string& filename, double target_angle = 0.0,
@@ -72,9 +95,34 @@ void write_hyperbolic_mesh_svg(const CDT& cdt, const std::string& filename, doub
 
 /*!
   \ingroup PkgHyperbolicMesh2Ref
+  Same as above with the options as named parameters (`CGAL::Hyperbolic_mesh_2::parameters`):
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{target_angle} `double`, radians: faces below get a black outline; default 0 \cgalParamNEnd
+    \cgalParamNBegin{good_angle} `double`, radians: the blue end of the colour ramp; default 2 pi / 3 \cgalParamNEnd
+    \cgalParamNBegin{title} `std::string`, default none \cgalParamNEnd
+    \cgalParamNBegin{image_size} `double`, pixels, default 800 \cgalParamNEnd
+    \cgalParamNBegin{zoom} `double`, default 1 \cgalParamNEnd
+    \cgalParamNBegin{view_center} `std::pair<double, double>`, default (0, 0) \cgalParamNEnd
+  \cgalNamedParamsEnd
+*/
+template <class CDT, class T, class Tag, class Base>
+void write_hyperbolic_mesh_svg(const CDT& cdt, const std::string& filename,
+                               const Named_function_parameters<T, Tag, Base>& np)
+{
+  using Poincare_disk_svg::internal::get;
+  const std::pair<double, double> c = get(np, internal_np::pds_view_center_t_v, std::make_pair(0.0, 0.0));
+  write_hyperbolic_mesh_svg(cdt, filename, get(np, internal_np::hm2_target_angle_t_v, 0.0),
+                            get(np, internal_np::hm2_good_angle_t_v, 2.0 * std::acos(-1.0) / 3.0),
+                            get(np, internal_np::hm2_title_t_v, ""), get(np, internal_np::pds_image_size_t_v, 800.0),
+                            get(np, internal_np::pds_zoom_t_v, 1.0), c.first, c.second);
+}
+
+/*!
+  \ingroup PkgHyperbolicMesh2Ref
   Writes an SVG bar chart of the central angles of the shortest edges of the faces of the domain (degrees,
   `bins` bins over [0, 120]); vertical lines at `marks` (degrees, e.g. the bound alpha). Throws
   `std::runtime_error` if the file cannot be written.
+  \deprecated positional form; prefer the named-parameter overload below.
 */
 template <class CDT>
 void write_central_angle_histogram_svg(const CDT& cdt, const std::string& filename,
@@ -118,6 +166,20 @@ void write_central_angle_histogram_svg(const CDT& cdt, const std::string& filena
   std::ofstream out(filename);
   if(!out) throw std::runtime_error("write_central_angle_histogram_svg: cannot write " + filename);
   out << os.str();
+}
+
+/*!
+  \ingroup PkgHyperbolicMesh2Ref
+  Same as above with the options as named parameters: `marks` (`std::vector<double>`, degrees, default none),
+  `title` (`std::string`), `bins` (`int`, default 60).
+*/
+template <class CDT, class T, class Tag, class Base>
+void write_central_angle_histogram_svg(const CDT& cdt, const std::string& filename,
+                                       const Named_function_parameters<T, Tag, Base>& np)
+{
+  using Poincare_disk_svg::internal::get;
+  write_central_angle_histogram_svg(cdt, filename, get(np, internal_np::hm2_marks_t_v, std::vector<double>()),
+                                    get(np, internal_np::hm2_title_t_v, ""), get(np, internal_np::hm2_bins_t_v, 60));
 }
 
 } // namespace Hyperbolic_mesh_2
