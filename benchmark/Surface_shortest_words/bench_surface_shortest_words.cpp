@@ -50,13 +50,10 @@ int main(int argc, char** argv)
     const double build_ms = ms_since(t0);
     t0 = std::chrono::steady_clock::now();
     Surface surface(S.mesh, S.length);
-    SSW::Shortest_word_options opt;
-    Solver solver(surface, S.base, S.generators, opt);
+    Solver solver(surface, S.base, S.generators);
     const double solver_ms = ms_since(t0);
-    SSW::Shortest_word_options exact_opt;
-    exact_opt.use_geometry = false;
-    exact_opt.shorten_generators = false;
-    Solver exact(surface, S.base, S.generators, exact_opt);
+    Solver exact(surface, S.base, S.generators,
+                 SSW::parameters::use_geometry(false, SSW::parameters::shorten_generators(false)));
     t0 = std::chrono::steady_clock::now();
     CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
     {

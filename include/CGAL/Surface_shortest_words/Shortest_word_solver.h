@@ -10,6 +10,7 @@
 #include <CGAL/Surface_shortest_words/internal/words.h>
 #include <CGAL/Hyperbolic_surface_2/Homotopy_basis.h>
 #include <boost/property_map/function_property_map.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
 
 #include <algorithm>
 #include <functional>
@@ -91,7 +92,9 @@ inline std::vector<std::string> to_labels(const Word& w)
 }
 
 /// \ingroup PkgSurfaceShortestWordsRef
-/// options of `Shortest_word_solver`
+/// Options of `Shortest_word_solver` as a struct. Deprecated: use the named parameters
+/// (`Surface_shortest_words::parameters::use_geometry`, `shorten_generators`, `make_canonical`,
+/// `max_lift_distance`, `vertex_snap`, CGAL's `callback`); kept for existing callers.
 struct Shortest_word_options
 {
   /// also compute the shortest loop through the base point in the class of the loop (Algorithm 2); the word
@@ -104,6 +107,34 @@ struct Shortest_word_options
   /// parameters of the shortest path computations
   Shortest_path_options path_options;
 };
+
+namespace parameters {
+/// named parameter of `Shortest_word_solver` (default true): also compute the shortest loop through the base
+/// point in the class of every loop (`Word_result::loop`, `length`); the word does not depend on it
+CGAL_HYPERBOLIC_NAMED_PARAMETER(use_geometry, ssw_use_geometry_t)
+/// named parameter of `Shortest_word_solver` (default true): shorten the generators at construction
+CGAL_HYPERBOLIC_NAMED_PARAMETER(shorten_generators, ssw_shorten_generators_t)
+/// named parameter of the computed-basis constructor of `Shortest_word_solver` (default true): make the
+/// greedy basis canonical by cut and paste (false: words in x1, ..., x2g)
+CGAL_HYPERBOLIC_NAMED_PARAMETER(make_canonical, ssw_make_canonical_t)
+} // namespace parameters
+
+/// \ingroup PkgSurfaceShortestWordsRef
+/// The solver options given by named parameters: `use_geometry`, `shorten_generators`, `make_canonical`
+/// (booleans, default true), and the path options of `path_options()` (`max_lift_distance`, `vertex_snap`,
+/// CGAL's `callback`), checked. \throws CGAL::Invalid_option_error for a path option out of its range
+template <class NP>
+Shortest_word_options word_options(const NP& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Shortest_word_options o;
+  o.use_geometry = choose_parameter(get_parameter(np, internal_np::ssw_use_geometry_t_v), o.use_geometry);
+  o.shorten_generators = choose_parameter(get_parameter(np, internal_np::ssw_shorten_generators_t_v), o.shorten_generators);
+  o.make_canonical = choose_parameter(get_parameter(np, internal_np::ssw_make_canonical_t_v), o.make_canonical);
+  o.path_options = path_options(np);
+  return o;
+}
 
 /// \ingroup PkgSurfaceShortestWordsRef
 /// detailed result of `Shortest_word_solver::solve()`
@@ -155,6 +186,7 @@ public:
   typedef typename Surface::face_descriptor face_descriptor;
   typedef typename Surface::Path Path;
   typedef typename Surface::Point Point;
+  typedef typename Surface::Step Step;
 
   /// `generators[2i]` = a_{i+1}, `generators[2i+1]` = b_{i+1}, as halfedge loops from `base` to `base`.
   /// Cost: O(total generator length) plus the shortening of the generators.
@@ -183,8 +215,29 @@ public:
       throw Invalid_generators_error("Shortest_word_solver: not a canonical system: the boundary of the cut disk reads " +
                                      to_string(relator_) + " instead of " + to_string(canonical));
     make_reducer();
+    compute_deck();
     shorten();
   }
+
+  /// the same with named parameters (`word_options()`): `use_geometry`, `shorten_generators`,
+  /// `max_lift_distance`, `vertex_snap`, CGAL's `callback`, e.g.
+  /// `Shortest_word_solver(surface, p, gens, SSW::parameters::use_geometry(false))`
+  template <class T, class Tag, class B>
+  Shortest_word_solver(const Surface& surface, vertex_descriptor base,
+                       const std::vector<std::vector<halfedge_descriptor> >& generators,
+                       const CGAL::Named_function_parameters<T, Tag, B>& np)
+    : Shortest_word_solver(surface, base, generators, word_options(np))
+  {
+    static_assert(CGAL::parameters::is_default_parameter<CGAL::Named_function_parameters<T, Tag, B>,
+                                                         internal_np::ssw_make_canonical_t>::value,
+                  "make_canonical applies to the computed system only (a given system is canonical)");
+  }
+
+  /// the computed system with named parameters (`word_options()`): `make_canonical` in addition
+  template <class T, class Tag, class B>
+  Shortest_word_solver(const Surface& surface, vertex_descriptor base, const CGAL::Named_function_parameters<T, Tag, B>& np)
+    : Shortest_word_solver(surface, base, word_options(np))
+  {}
 
   /*!
     Computes a system of loops itself: the greedy homotopy basis of Erickson and Whittlesey (the tree of
@@ -227,6 +280,7 @@ public:
       }
     }
     make_reducer();
+    compute_deck();
     shorten();
   }
 
@@ -261,6 +315,95 @@ private:
     } catch(const std::invalid_argument& e) {
       throw Invalid_generators_error(std::string("Shortest_word_solver: the relator is not a one-vertex surface relator: ") + e.what());
     }
+  }
+
+  // the deck transformation of every generator in the base chart (`deck_transformation()`); without them
+  // (a generator lifted beyond double precision) solve() shortens the input loop itself
+  void compute_deck()
+  {
+    deck_.clear();
+    if(!opt_.use_geometry) return;
+    try {
+      for(const auto& g : gens_) deck_.push_back(deck_transformation(s_.path_from_halfedges(g)));
+    } catch(const Precision_error&) {
+      deck_.clear();
+    }
+  }
+
+  // The base chart: the layer's chart of the base face recentred at the base corner (p at the origin). The
+  // isometry D that maps it onto its lift at the end of the lift of `loop` (a loop at p, closed by the turn to
+  // the base corner): the lift of the loop ends at D(0), and loops compose: D(uv) = D(u) D(v).
+  internal::Isometry deck_transformation(const Path& loop) const
+  {
+    const std::vector<Step> st = s_.steps(loop);
+    Step base;
+    base.face = base_face_; base.in = base.out = base_corner_;
+    internal::Crossing_reducer<TriangleMesh> reducer(tm_);
+    auto out = boost::make_function_output_iterator([&reducer](halfedge_descriptor h) { reducer.push(h); });
+    if(!st.empty()) {
+      s_.crossings_at(loop.front(), base, st.front(), out);
+      for(std::size_t i = 1; i < st.size(); ++i) s_.crossings_at(loop[i], st[i - 1], st[i], out);
+      s_.crossings_at(loop.back(), st.back(), base, out);
+    }
+    const Point p = s_.corner(base_corner_);
+    internal::Transient_chart<Surface> start(s_);
+    start.set_face(base_face_);
+    start.recentre(s_.position(p, base_corner_, start.face_chart()));
+    const internal::Transient_chart<Surface> end =
+      internal::develop_crossings(s_, base_face_, p, base_corner_, reducer.result(), opt_.path_options);
+    CGAL_assertion(end.current_face() == base_face_);
+    const internal::Isometry back = end.accumulated().inverse();
+    return internal::Disk::isometry_from_pairs(internal::to_point(start.z()[0]), internal::to_point(start.z()[1]),
+                                               internal::to_point(internal::apply_isometry(back, end.z()[0])),
+                                               internal::to_point(internal::apply_isometry(back, end.z()[1])));
+  }
+
+  // The shortest loop through p of the element of the (geodesic) word w: w is cut into pieces whose deck
+  // transformation moves p by at most `reach`; each piece's geodesic loop is traced from the base corner to
+  // D(piece)(0) in the base chart (no lift of a path: one isometry product per letter), and the broken
+  // geodesic through these lifts of p (a quasi-geodesic: w is geodesic) is straightened by the Birkhoff
+  // rounds of chart chaining. Cost: O(|w| + R m), m the faces crossed by the result, R rounds.
+  Shortest_path_result<TriangleMesh> word_geodesic(const Word& w) const
+  {
+    const Shortest_path_options& o = opt_.path_options;
+    const double reach = 0.4 * o.max_lift_distance;
+    const Point p = s_.needs_corners() ? s_.corner(base_corner_) : Point::vertex(p_);
+    Step first;
+    first.face = base_face_; first.in = first.out = base_corner_;
+    // the whole word in one chart when its lift of p is within reach of double precision
+    {
+      internal::Isometry D;
+      int since = 0;
+      for(int l : w) {
+        const internal::Isometry& g = deck_[std::size_t(std::abs(l) - 1)];
+        D = D * (l > 0 ? g : g.inverse());
+        if(++since >= 8) { D = D.normalized(); since = 0; }
+      }
+      const internal::Cplx T = internal::apply_isometry(D, internal::Cplx(0, 0));
+      if(internal::distance_to_origin(T) <= 0.9 * o.max_lift_distance)
+        return internal::trace_geodesic(s_, p, first, T, p, o, 0);
+    }
+    Path cur;
+    Shortest_path_result<TriangleMesh> piece;
+    std::size_t faces = 0, pieces = 0, i = 0;
+    do {
+      internal::Isometry D;
+      std::size_t j = i;
+      for(int since = 0; j < w.size(); ++j) {
+        const internal::Isometry& g = deck_[std::size_t(std::abs(w[j]) - 1)];
+        internal::Isometry n = D * (w[j] > 0 ? g : g.inverse());
+        if(++since >= 8) { n = n.normalized(); since = 0; }
+        if(j > i && internal::distance_to_origin(internal::apply_isometry(n, internal::Cplx(0, 0))) > reach) break;
+        D = n;
+      }
+      piece = internal::trace_geodesic(s_, p, first, internal::apply_isometry(D, internal::Cplx(0, 0)), p, o, 0);
+      faces += piece.embedded_faces;
+      for(const Point& q : piece.path) internal::append_point(s_, cur, q);
+      ++pieces;
+      i = j;
+    } while(i < w.size());
+    if(pieces == 1) return piece;
+    return internal::straighten_chained(s_, cur, o, faces);
   }
 
   void shorten()
@@ -330,7 +473,10 @@ public:
     r.word = reducer_->reduce(r.crossing_word);
     if(opt_.use_geometry && loop.size() > 1) {
       try {
-        Shortest_path_result<TriangleMesh> sp = shortest_homotopic_path(s_, loop, opt_.path_options);
+        // from the word when the deck transformations are known (the word is geodesic: no wandering), else
+        // from the loop itself
+        Shortest_path_result<TriangleMesh> sp =
+          deck_.empty() ? shortest_homotopic_path(s_, loop, opt_.path_options) : word_geodesic(r.word);
         r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
       } catch(const Precision_error& e) {
         r.used_geometry = false;
@@ -352,13 +498,13 @@ public:
   Word crossing_word(const Path& loop) const
   {
     Word w;
-    face_descriptor cur = base_face_;
-    for(std::size_t i = 0; i + 1 < loop.size(); ++i) {
-      const face_descriptor f = s_.common_face(loop[i], loop[i + 1], cur);
-      move(loop[i], cur, f, w);
-      cur = f;
-    }
-    move(loop.back(), cur, base_face_, w);
+    const std::vector<Step> st = s_.steps(loop);
+    if(st.empty()) return w;
+    Step base;
+    base.face = base_face_; base.in = base.out = base_corner_;
+    move(loop.front(), base, st.front(), w);
+    for(std::size_t i = 1; i < st.size(); ++i) move(loop[i], st[i - 1], st[i], w);
+    move(loop.back(), st.back(), base, w);
     w = internal::free_reduce(w);
     if(!x_to_gen_.empty()) w = internal::substitute(internal::dehn_reduce(w, cut_relator_), x_to_gen_);
     return w;
@@ -388,39 +534,21 @@ private:
     if(k >= 0) internal::append_reduced(w, side_words_[std::size_t(k)]);
   }
 
-  // moves from face a to face b (both containing point p), emitting the letters of the generators crossed
-  void move(const Point& p, face_descriptor a, face_descriptor b, Word& w) const
+  // moves at the path point p from the step `from` to the step `to`, emitting the letters of the generators
+  // crossed: across the edge of an edge point, or around a vertex the way that crosses fewer generators
+  void move(const Point& p, const Step& from, const Step& to, Word& w) const
   {
-    if(a == b) return;
     if(!p.on_vertex) {
-      halfedge_descriptor h = p.h;
-      if(face(h, tm_) != a) h = opposite(h, tm_);
-      if(face(h, tm_) != a || face(opposite(h, tm_), tm_) != b) throw Invalid_path_error("Shortest_word_solver: inconsistent path");
-      emit_crossing(h, w);
+      s_.crossings_at(p, from, to, boost::make_function_output_iterator([&](halfedge_descriptor h) { emit_crossing(h, w); }));
       return;
     }
-    std::size_t lccw = 0, lcw = 0;
-    const int nccw = turn(p.v, a, b, true, nullptr, lccw), ncw = turn(p.v, a, b, false, nullptr, lcw);
-    turn(p.v, a, b, nccw < ncw || (nccw == ncw && lccw <= lcw), &w, lccw);
-  }
-
-  // turns around v from face a to face b, emitting the crossings into `w` if given; returns the number of
-  // generator crossings, `steps` the number of edges crossed
-  int turn(vertex_descriptor v, face_descriptor a, face_descriptor b, bool ccw, Word* w, std::size_t& steps) const
-  {
-    halfedge_descriptor h = halfedge(a, tm_);
-    while(target(h, tm_) != v) h = next(h, tm_);
-    int n = 0;
-    face_descriptor f = a;
-    steps = 0;
-    while(f != b) {
-      const halfedge_descriptor c = ccw ? h : next(h, tm_);
-      if(exit_side_.get(c) >= 0) { ++n; if(w) emit_crossing(c, *w); }
-      h = ccw ? prev(opposite(h, tm_), tm_) : opposite(next(h, tm_), tm_);
-      f = face(h, tm_);
-      if(++steps > 1000000) throw Invalid_path_error("Shortest_word_solver: face not around vertex");
-    }
-    return n;
+    if(from.out == to.in) return;
+    std::size_t n[2] = {0, 0}, steps[2] = {0, 0};
+    for(int k = 0; k < 2; ++k)
+      steps[k] = s_.turn(from.out, to.in, k == 0, boost::make_function_output_iterator([&](halfedge_descriptor h) {
+        if(exit_side_.get(h) >= 0) ++n[k]; }));
+    const bool ccw = n[0] < n[1] || (n[0] == n[1] && steps[0] <= steps[1]);
+    s_.turn(from.out, to.in, ccw, boost::make_function_output_iterator([&](halfedge_descriptor h) { emit_crossing(h, w); }));
   }
 
   // ---------------------------------------------------------------- validation
@@ -502,6 +630,7 @@ private:
       if(a != b) exit_side_.set(hp.first, int(a * m + b)); // a == b: the trivial element
     }
     base_face_ = face(first, tm_);
+    base_corner_ = prev(first, tm_); // the corner of D at p on the left of `first`
     relator_ = cut_relator_;
     cut_gens_ = gens_;
     x_to_gen_.clear();
@@ -546,10 +675,12 @@ private:
   internal::Halfedge_int_map<TriangleMesh> exit_side_;
   bool canonical_ = true;
   face_descriptor base_face_{};
+  halfedge_descriptor base_corner_{};
   std::vector<Path> short_gens_;
   std::vector<double> short_lengths_;
   std::vector<std::string> short_status_;
   std::shared_ptr<const internal::Geodesic_word_reducer> reducer_;
+  std::vector<internal::Isometry> deck_; // deck transformation of generator i in the base chart
 };
 
 } // namespace Surface_shortest_words

@@ -7,9 +7,11 @@
 #define CGAL_SURFACE_SHORTEST_WORDS_SHORTEST_HOMOTOPIC_PATH_H
 
 #include <CGAL/Surface_shortest_words/Hyperbolic_surface.h>
+#include <CGAL/Surface_shortest_words/internal/transient_chart.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Hyperbolic_geometry_named_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <boost/iterator/function_output_iterator.hpp>
 
 #include <cmath>
 #include <deque>
@@ -20,6 +22,9 @@
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_tolerance_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_max_lift_distance_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_vertex_snap_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_use_geometry_t)       // Shortest_word_solver
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_shorten_generators_t) // Shortest_word_solver
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_make_canonical_t)     // Shortest_word_solver
 
 namespace CGAL {
 namespace Surface_shortest_words {
@@ -61,7 +66,25 @@ CGAL_HYPERBOLIC_NAMED_PARAMETER(max_lift_distance, ssw_max_lift_distance_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER(vertex_snap, ssw_vertex_snap_t)
 } // namespace parameters
 
-/// the path options given by named parameters (defaults of `Shortest_path_options` otherwise), checked
+namespace internal {
+// no option is dropped silently: options of other functions are compile-time errors here
+template <class NP, bool loop>
+void check_path_named_parameters()
+{
+  using CGAL::parameters::is_default_parameter;
+  static_assert(is_default_parameter<NP, internal_np::ssw_use_geometry_t>::value &&
+                is_default_parameter<NP, internal_np::ssw_shorten_generators_t>::value &&
+                is_default_parameter<NP, internal_np::ssw_make_canonical_t>::value,
+                "use_geometry, shorten_generators, make_canonical are options of Shortest_word_solver");
+  static_assert(loop || (is_default_parameter<NP, internal_np::ssw_tolerance_t>::value &&
+                         is_default_parameter<NP, internal_np::number_of_iterations_t>::value),
+                "tolerance and number_of_iterations are options of shortest_homotopic_loop()");
+}
+} // namespace internal
+
+/// The path options given by named parameters (defaults of `Shortest_path_options` otherwise), checked:
+/// `max_lift_distance`, `vertex_snap`, and CGAL's `callback` (a functor called with the number of faces
+/// processed so far, `Shortest_path_options::progress`). \throws CGAL::Invalid_option_error (`check_options()`)
 template <class NP>
 Shortest_path_options path_options(const NP& np)
 {
@@ -70,6 +93,7 @@ Shortest_path_options path_options(const NP& np)
   Shortest_path_options o;
   o.max_lift_distance = choose_parameter(get_parameter(np, internal_np::ssw_max_lift_distance_t_v), o.max_lift_distance);
   o.vertex_snap = choose_parameter(get_parameter(np, internal_np::ssw_vertex_snap_t_v), o.vertex_snap);
+  o.progress = choose_parameter(get_parameter(np, internal_np::callback), o.progress);
   check_options(o);
   return o;
 }
@@ -89,285 +113,66 @@ struct Shortest_path_result
 
 namespace internal {
 
-// The transient embedding of Algorithm 2: a single face laid out in the Poincare disk (the chart), moved
-// from face to face by unfolding across edges, re-centred so that the current point stays at the origin.
-template <class Surface>
-class Transient_chart
-{
-public:
-  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
-  typedef typename Surface::face_descriptor face_descriptor;
-  typedef typename Surface::vertex_descriptor vertex_descriptor;
-
-  explicit Transient_chart(const Surface& s) : s_(s) {}
-
-  void set_face(face_descriptor f) { s_.layout_face(f, h0_, z_); face_ = f; ++count_; }
-  face_descriptor current_face() const { return face_; }
-  halfedge_descriptor h0() const { return h0_; }
-  const Cplx* z() const { return z_; }
-  std::size_t count() const { return count_; }
-  const Isometry& accumulated() const { return phi_; }
-
-  int index_of(halfedge_descriptor h) const
-  {
-    halfedge_descriptor g = h0_;
-    for(int i = 0; i < 3; ++i, g = next(g, s_.mesh())) if(g == h) return i;
-    return -1;
-  }
-  halfedge_descriptor halfedge_at(int i) const
-  {
-    halfedge_descriptor g = h0_;
-    for(int k = 0; k < i; ++k) g = next(g, s_.mesh());
-    return g;
-  }
-  int index_of_vertex(vertex_descriptor v) const
-  {
-    halfedge_descriptor g = h0_;
-    for(int i = 0; i < 3; ++i, g = next(g, s_.mesh())) if(source(g, s_.mesh()) == v) return i;
-    return -1;
-  }
-
-  /// moves the chart to the face across the edge of `h` (a halfedge of the current face)
-  void unfold(halfedge_descriptor h)
-  {
-    const int i = index_of(h);
-    CGAL_assertion(i >= 0);
-    const Cplx A = z_[(i + 1) % 3], B = z_[i]; // target(h), source(h)
-    const halfedge_descriptor o = opposite(h, s_.mesh());
-    const halfedge_descriptor on = next(o, s_.mesh()), op = next(on, s_.mesh());
-    h0_ = o;
-    z_[0] = A; z_[1] = B;
-    z_[2] = third_vertex(A, B, s_.length(on), s_.length(op), s_.length(o));
-    face_ = face(o, s_.mesh());
-    ++count_;
-  }
-
-  /// rotates the chart around vertex `v` of the current face until it reaches face `target`
-  /// (the shorter way round); returns the halfedges crossed
-  void rotate_to(vertex_descriptor v, face_descriptor target)
-  {
-    if(face_ == target) return;
-    // count the steps both ways
-    const int ccw = steps_around(v, target, true), cw = steps_around(v, target, false);
-    if(ccw < 0) throw Invalid_path_error("Surface_shortest_words: face not incident to the vertex");
-    const bool use_ccw = ccw <= cw;
-    const int n = use_ccw ? ccw : cw;
-    for(int k = 0; k < n; ++k) unfold(rotation_halfedge(v, use_ccw));
-  }
-
-  /// the halfedge of the current face whose edge is crossed when turning around `v` (ccw or cw)
-  halfedge_descriptor rotation_halfedge(vertex_descriptor v, bool ccw) const
-  {
-    const int i = index_of_vertex(v);
-    // halfedge entering v is at index i-1, leaving v at index i
-    return ccw ? halfedge_at((i + 2) % 3) : halfedge_at(i);
-  }
-
-  /// applies the isometry f to the chart (new coordinates = f(old)) and records it
-  void transform(const Isometry& f)
-  {
-    for(int k = 0; k < 3; ++k) z_[k] = apply_isometry(f, z_[k]);
-    phi_ = f * phi_;
-    if(++since_normalize_ >= 8) { phi_ = phi_.normalized(); since_normalize_ = 0; }
-  }
-
-  void recentre(const Cplx& c)
-  {
-    if(std::norm(c) == 0) return;
-    transform(to_origin(c));
-  }
-
-  void reset_accumulated() { phi_ = Isometry(); }
-
-private:
-  int steps_around(vertex_descriptor v, face_descriptor target, bool ccw) const
-  {
-    const auto& tm = s_.mesh();
-    // find the halfedge of face_ with target v
-    halfedge_descriptor h = halfedge_at((index_of_vertex(v) + 2) % 3);
-    int steps = 0;
-    face_descriptor f = face_;
-    while(f != target) {
-      h = ccw ? prev(opposite(h, tm), tm) : opposite(next(h, tm), tm);
-      f = face(h, tm);
-      if(++steps > 100000 || f == face_) return -1;
-    }
-    return steps;
-  }
-
-  const Surface& s_;
-  face_descriptor face_{};
-  halfedge_descriptor h0_{};
-  Cplx z_[3];
-  Isometry phi_;
-  int since_normalize_ = 0;
-  std::size_t count_ = 0;
-};
-
-
-// Exact reduction of a sequence of crossed edges (each crossing goes from face(h) to face(opposite(h))):
-// an immediate backtrack cancels, and more than half a turn around a vertex is replaced by the shorter turn
-// the other way (a full turn disappears). Both are homotopies that fix the end points. Stack based, linear.
-template <class TriangleMesh>
-class Crossing_reducer
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  struct Entry { halfedge_descriptor h; std::size_t ccw, cw; };
-public:
-  explicit Crossing_reducer(const TriangleMesh& tm) : tm_(tm) {}
-
-  void push(halfedge_descriptor c)
-  {
-    todo_.push_back(c);
-    while(!todo_.empty()) {
-      c = todo_.front(); todo_.pop_front();
-      if(!st_.empty() && st_.back().h == opposite(c, tm_)) { st_.pop_back(); continue; }
-      std::size_t rccw = 1, rcw = 1;
-      if(!st_.empty()) {
-        if(c == prev(opposite(st_.back().h, tm_), tm_)) rccw = st_.back().ccw + 1;
-        if(c == next(opposite(st_.back().h, tm_), tm_)) rcw = st_.back().cw + 1;
-      }
-      st_.push_back(Entry{c, rccw, rcw});
-      const std::size_t dccw = CGAL::halfedges_around_target(target(c, tm_), tm_).size();
-      const std::size_t dcw = CGAL::halfedges_around_target(source(c, tm_), tm_).size();
-      std::vector<halfedge_descriptor> rep;
-      if(2 * rccw > dccw) {
-        // counterclockwise around target(c): replace by the clockwise turn
-        halfedge_descriptor h = st_[st_.size() - rccw].h;
-        const auto B = face(opposite(c, tm_), tm_);
-        st_.resize(st_.size() - rccw);
-        while(face(h, tm_) != B) { rep.push_back(next(h, tm_)); h = opposite(next(h, tm_), tm_); }
-      } else if(2 * rcw > dcw) {
-        // clockwise around source(c): replace by the counterclockwise turn
-        halfedge_descriptor h = prev(st_[st_.size() - rcw].h, tm_);
-        const auto B = face(opposite(c, tm_), tm_);
-        st_.resize(st_.size() - rcw);
-        while(face(h, tm_) != B) { rep.push_back(h); h = prev(opposite(h, tm_), tm_); }
-      } else {
-        continue;
-      }
-      todo_.insert(todo_.begin(), rep.begin(), rep.end());
-    }
-  }
-
-  std::vector<halfedge_descriptor> result() const
-  {
-    std::vector<halfedge_descriptor> r;
-    r.reserve(st_.size());
-    for(const Entry& e : st_) r.push_back(e.h);
-    return r;
-  }
-
-private:
-  const TriangleMesh& tm_;
-  std::vector<Entry> st_;
-  std::deque<halfedge_descriptor> todo_;
-};
-
-// the crossings from face a to face b, both containing point p (across the edge of p, or the shorter way
-// around the vertex p)
-template <class Surface, class Reducer>
-void crossings_between(const Surface& s, const typename Surface::Point& p, typename Surface::face_descriptor a,
-                       typename Surface::face_descriptor b, Reducer& out)
-{
-  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
-  const auto& tm = s.mesh();
-  if(a == b) return;
-  if(!p.on_vertex) {
-    halfedge_descriptor h = p.h;
-    if(face(h, tm) != a) h = opposite(h, tm);
-    if(face(h, tm) != a || face(opposite(h, tm), tm) != b) throw Invalid_path_error("Surface_shortest_words: inconsistent path");
-    out.push(h);
-    return;
-  }
-  halfedge_descriptor h0 = halfedge(a, tm);
-  while(target(h0, tm) != p.v) h0 = next(h0, tm);
-  std::vector<halfedge_descriptor> ccw, cw;
-  halfedge_descriptor h = h0;
-  while(face(h, tm) != b) {
-    ccw.push_back(h); h = prev(opposite(h, tm), tm);
-    if(h == h0) throw Invalid_path_error("Surface_shortest_words: face not incident to the vertex");
-  }
-  h = h0;
-  while(face(h, tm) != b) { cw.push_back(next(h, tm)); h = opposite(next(h, tm), tm); }
-  for(halfedge_descriptor c : (ccw.size() <= cw.size() ? ccw : cw)) out.push(c);
-}
-
-template <class Surface, class Chart>
-void move_across_point(const Surface& s, Chart& chart, const typename Surface::Point& p,
-                       typename Surface::face_descriptor target)
-{
-  if(chart.current_face() == target) return;
-  const auto& tm = s.mesh();
-  if(p.on_vertex) { chart.rotate_to(p.v, target); return; }
-  typename Surface::halfedge_descriptor h = p.h;
-  if(face(h, tm) != chart.current_face()) h = opposite(h, tm);
-  if(face(h, tm) != chart.current_face() || face(opposite(h, tm), tm) != target)
-    throw Invalid_path_error("Surface_shortest_words: inconsistent path");
-  chart.unfold(h);
-}
-
-// true if direction u (from the origin, where vertex v of the chart's face sits) lies in the face's angle at v
+// true if direction u (from the origin, where the corner `c` of the chart's face sits) lies in the face's
+// angle at that corner
 template <class Chart>
-bool in_sector(const Chart& chart, int iv, const Cplx& u, double tol)
+bool in_sector(const Chart& chart, typename Chart::halfedge_descriptor c, const Cplx& u, double tol)
 {
+  const int iv = chart.index_of_corner(c);
   const Cplx A = chart.z()[(iv + 1) % 3], B = chart.z()[(iv + 2) % 3];
   return cross(A, u) >= -tol * std::abs(A) && cross(u, B) >= -tol * std::abs(B);
 }
 
-// rotates the chart around vertex v (at the origin) to the face whose angle at v contains direction u
+// rotates the chart around the vertex of corner `c` (at the origin) to the corner whose angle contains
+// direction u; returns that corner
 template <class Surface, class Chart>
-void rotate_to_direction(const Surface& s, Chart& chart, typename Surface::vertex_descriptor v, const Cplx& u)
+typename Surface::halfedge_descriptor
+rotate_to_direction(const Surface& s, Chart& chart, typename Surface::halfedge_descriptor c, const Cplx& u)
 {
-  const std::size_t deg = CGAL::halfedges_around_target(v, s.mesh()).size();
+  const std::size_t deg = CGAL::halfedges_around_target(target(c, s.mesh()), s.mesh()).size();
   for(double tol : {0.0, 1e-12, 1e-9, 1e-6}) {
     for(std::size_t k = 0; k <= deg; ++k) {
-      if(in_sector(chart, chart.index_of_vertex(v), u, tol)) return;
-      chart.unfold(chart.rotation_halfedge(v, true));
+      if(in_sector(chart, c, u, tol)) return c;
+      chart.unfold(chart.rotation_halfedge(c, true));
+      c = chart.rotated_corner(c, true);
     }
   }
   throw Precision_error("Surface_shortest_words: no face around a vertex contains the geodesic direction");
 }
 
-} // namespace internal
-
-namespace internal {
-
-// Algorithm 2 in one chart (the lifted path must stay within max_lift_distance of its start)
+// the vertex point of the corner `c`: a corner point where vertex points need corners
 template <class Surface>
-Shortest_path_result<typename Surface::Triangle_mesh>
-shortest_path_one_chart(const Surface& surface, const typename Surface::Path& path,
-                        const Shortest_path_options& options)
+typename Surface::Point vertex_point(const Surface& s, typename Surface::halfedge_descriptor c)
 {
-  typedef typename Surface::Point Point;
-  typedef typename Surface::face_descriptor face_descriptor;
-  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
-  typedef internal::Cplx Cplx;
-  const auto& tm = surface.mesh();
+  return s.needs_corners() ? s.corner(c) : Surface::Point::vertex(target(c, s.mesh()));
+}
 
-  surface.check_path(path);
-  Shortest_path_result<typename Surface::Triangle_mesh> res;
-  if(path.size() == 1) { res.path = path; return res; }
+// appends `q` unless it is the same as the last point (corners compared too)
+template <class Surface>
+void append_point(const Surface& s, typename Surface::Path& path, const typename Surface::Point& q)
+{
+  if(!path.empty() && s.same_point(path.back(), q) && (!q.on_vertex || path.back().h == q.h)) return;
+  path.push_back(q);
+}
 
-  // ---- lift (steps 1-3): the faces met by the path, as the sequence of crossed edges (a path in the dual
-  // graph of the universal cover), exactly reduced (backtracks cancelled, turns around a vertex by more than
-  // half its degree replaced by the turn the other way: both fix the lifted end point), then embedded
-  // transiently: one face at a time, unfolded across the next edge, the chart re-centred at every step.
-  internal::Crossing_reducer<typename Surface::Triangle_mesh> reducer(tm);
-  face_descriptor f = surface.common_face(path[0], path[1], boost::graph_traits<typename Surface::Triangle_mesh>::null_face());
-  const face_descriptor start_face = f;
-  for(std::size_t i = 1; i + 1 < path.size(); ++i) {
-    const face_descriptor fn = surface.common_face(path[i], path[i + 1], f);
-    internal::crossings_between(surface, path[i], f, fn, reducer);
-    f = fn;
-  }
+// Develops the crossed halfedges `crossings` one face at a time (the layer's chart of `f` recentred at the
+// point `origin` at corner `origin_corner`, then the layer's neighbour apices), re-centred after every step;
+// returns the chart at the end: `accumulated()` maps the start frame to its frame. Throws `Precision_error`
+// when the development leaves `max_lift_distance`.
+template <class Surface>
+Transient_chart<Surface> develop_crossings(const Surface& surface, typename Surface::face_descriptor f,
+                                           const typename Surface::Point& origin,
+                                           typename Surface::halfedge_descriptor origin_corner,
+                                           const std::vector<typename Surface::halfedge_descriptor>& crossings,
+                                           const Shortest_path_options& options)
+{
   internal::Transient_chart<Surface> chart(surface);
-  chart.set_face(start_face);
-  chart.recentre(surface.position_in_face(path[0], chart.h0(), chart.z()));
+  chart.set_face(f);
+  chart.recentre(surface.position(origin, origin_corner, chart.face_chart()));
   chart.reset_accumulated();
   std::size_t next_report = std::size_t(1) << 16;
   const double max_alpha_beta = std::tanh(options.max_lift_distance / 2);
-  for(halfedge_descriptor c : reducer.result()) {
+  for(typename Surface::halfedge_descriptor c : crossings) {
     chart.unfold(c);
     chart.recentre(chart.z()[0]);
     // the chart's origin must stay within max_lift_distance of the start (else rounding errors grow
@@ -379,9 +184,60 @@ shortest_path_one_chart(const Surface& surface, const typename Surface::Path& pa
       throw Precision_error("Surface_shortest_words: the lifted path leaves the double precision range (max_lift_distance)");
     if(options.progress && chart.count() >= next_report) { options.progress(chart.count()); next_report <<= 1; }
   }
-  CGAL_assertion(chart.current_face() == f);
-  const Cplx end_local = surface.position_in_face(path.back(), chart.h0(), chart.z());
-  Cplx T = internal::apply_isometry(chart.accumulated().inverse(), end_local);
+  return chart;
+}
+
+// Algorithm 2, steps 1-3: the lifted end point T of `path` in the chart of the first step recentred at
+// path[0] (the faces met, as crossed edges, exactly reduced, then developed); `lifted` counts the faces
+template <class Surface>
+Cplx lift_end_point(const Surface& surface, const typename Surface::Path& path,
+                    const std::vector<typename Surface::Step>& st, const Shortest_path_options& options, std::size_t& lifted)
+{
+  internal::Crossing_reducer<typename Surface::Triangle_mesh> reducer(surface.mesh());
+  for(std::size_t i = 1; i < st.size(); ++i)
+    surface.crossings_at(path[i], st[i - 1], st[i],
+                         boost::make_function_output_iterator([&reducer](typename Surface::halfedge_descriptor h) { reducer.push(h); }));
+  const Transient_chart<Surface> chart = develop_crossings(surface, st.front().face, path[0], st.front().in, reducer.result(), options);
+  CGAL_assertion(chart.current_face() == st.back().face);
+  const Cplx end_local = surface.position(path.back(), st.back().out, chart.face_chart());
+  lifted = chart.count();
+  return internal::apply_isometry(chart.accumulated().inverse(), end_local);
+}
+
+// appends the end point of a trace that ends in the chart's current face, where the end point's lift is T
+template <class Surface, class Chart>
+void finish_at_end(const Surface& s, const Chart& tr, const Cplx& T, const typename Surface::Point& end,
+                   typename Surface::halfedge_descriptor from_corner, typename Surface::Path& path)
+{
+  if(!s.needs_corners() || !end.on_vertex) { if(!s.same_point(path.back(), end)) path.push_back(end); return; }
+  // the corner of the current face at the lift of the end vertex
+  int best = -1; double bd = std::numeric_limits<double>::infinity();
+  for(int i = 0; i < 3; ++i)
+    if(target(tr.halfedge_at(i), s.mesh()) == end.v) {
+      const double d = std::abs(tr.z()[(i + 1) % 3] - T);
+      if(d < bd) { bd = d; best = i; }
+    }
+  if(best < 0) throw Precision_error("Surface_shortest_words: the trace ends in a face without the end vertex");
+  const typename Surface::halfedge_descriptor c = tr.halfedge_at(best);
+  // (from the corner `from_corner` of the same face: along a side, marked by its midpoint)
+  if(from_corner != boost::graph_traits<typename Surface::Triangle_mesh>::null_halfedge() && from_corner != c)
+    path.push_back(Surface::Point::on_edge(c == next(from_corner, s.mesh()) ? c : from_corner, 0.5));
+  append_point(s, path, s.corner(c));
+  if(end.has_corner() && end.h != c) path.push_back(end);
+}
+
+// Algorithm 2, steps 4-7: the geodesic from `start` (a point of the face `first.face`, at the corner
+// `first.in` if it is a vertex) to `end`, whose lift is T in the layer's chart of `first.face` recentred at
+// `start`, traced one face at a time; `lifted` (faces embedded before) is added to `embedded_faces`.
+template <class Surface>
+Shortest_path_result<typename Surface::Triangle_mesh>
+trace_geodesic(const Surface& surface, const typename Surface::Point& start, const typename Surface::Step& first,
+               Cplx T, const typename Surface::Point& end, const Shortest_path_options& options, std::size_t lifted)
+{
+  typedef typename Surface::Point Point;
+  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
+  const auto& tm = surface.mesh();
+  Shortest_path_result<typename Surface::Triangle_mesh> res;
   res.lift_distance = internal::distance_to_origin(T);
   if(!(res.lift_distance <= options.max_lift_distance)) {
     std::ostringstream os;
@@ -389,40 +245,42 @@ shortest_path_one_chart(const Surface& surface, const typename Surface::Path& pa
        << " > max_lift_distance = " << options.max_lift_distance << " (beyond double precision)";
     throw Precision_error(os.str());
   }
-  std::size_t lifted = chart.count();
 
   // ---- trace (steps 4-7): the geodesic from the start towards T, one face at a time
-  res.path.push_back(path[0]);
-  const Point& end = path.back();
+  res.path.push_back(start.on_vertex && surface.needs_corners() ? surface.corner(first.in) : start);
   if(res.lift_distance < 1e-12) {
-    if(!surface.same_point(path[0], end)) res.path.push_back(end);
+    if(!surface.same_point(start, end) || (end.on_vertex && end.h != res.path[0].h)) res.path.push_back(end);
     res.embedded_faces = lifted;
     return res;
   }
   internal::Transient_chart<Surface> tr(surface);
-  tr.set_face(start_face);
-  // the same deterministic layout as the start chart of the lift
-  tr.recentre(surface.position_in_face(path[0], tr.h0(), tr.z()));
+  tr.set_face(first.face);
+  // the same deterministic layout as the start chart of the lift: T is expressed in tr's chart
+  tr.recentre(surface.position(start, first.in, tr.face_chart()));
   tr.reset_accumulated();
-  // T is expressed in the start chart, which equals tr's chart (same face, same construction)
-  Point cur = path[0];
-  // choose the start face containing the direction of T
+  halfedge_descriptor corner = first.in; // corner of the current vertex point, if any
+  bool at_vertex = start.on_vertex;      // the origin is that corner (no edge crossed since)
   {
+    // choose the start face containing the direction of T
     const Cplx u = T / std::abs(T);
-    if(cur.on_vertex) {
-      internal::rotate_to_direction(surface, tr, cur.v, u);
+    if(start.on_vertex) {
+      corner = internal::rotate_to_direction(surface, tr, corner, u);
+      if(surface.needs_corners() && corner != first.in) res.path.push_back(surface.corner(corner));
     } else {
-      halfedge_descriptor h = cur.h;
+      halfedge_descriptor h = start.h;
       if(face(h, tm) != tr.current_face()) h = opposite(h, tm);
       const int i = tr.index_of(h);
       const Cplx third = tr.z()[(i + 2) % 3], a = tr.z()[i], b = tr.z()[(i + 1) % 3];
       const double side_third = internal::cross(b - a, third - a), side_u = internal::cross(b - a, u);
       if(side_third * side_u < 0) tr.unfold(h);
+      // the crossing convention of paths that need corners: the segment after an edge point of halfedge g
+      // lies in face(opposite(g))
+      if(surface.needs_corners() && face(opposite(start.h, tm), tm) != tr.current_face())
+        res.path[0] = Point::on_edge(opposite(start.h, tm), 1.0 - start.t);
     }
   }
-  const std::vector<face_descriptor> end_faces = surface.faces_of(end);
   const std::size_t max_steps = 64 * (lifted + 1000);
-  std::size_t steps = 0;
+  std::size_t steps = 0, next_report = std::size_t(1) << 16;
   while(true) {
     if(++steps > max_steps) throw Precision_error("Surface_shortest_words: geodesic tracing did not reach the end point");
     if(options.progress && lifted + tr.count() >= next_report) { options.progress(lifted + tr.count()); next_report <<= 1; }
@@ -441,7 +299,7 @@ shortest_path_one_chart(const Surface& surface, const typename Surface::Path& pa
       if(s > best_s) { best_s = s; best_i = i; }
     }
     const double kT = std::abs(internal::to_klein(T));
-    const bool end_here = std::find(end_faces.begin(), end_faces.end(), tr.current_face()) != end_faces.end();
+    const bool end_here = surface.in_face(end.on_vertex ? Point::vertex(end.v) : end, tr.current_face());
     if(best_i < 0 || kT <= best_s * (1 + 1e-12) + 1e-15) {
       if(!end_here) {
         if(best_i < 0) throw Precision_error("Surface_shortest_words: lost the geodesic while tracing");
@@ -449,7 +307,7 @@ shortest_path_one_chart(const Surface& surface, const typename Surface::Path& pa
         if(kT < best_s * (1 - 1e-9)) throw Precision_error("Surface_shortest_words: traced geodesic misses the end point");
       } else {
         res.length += internal::distance_to_origin(T);
-        if(!surface.same_point(res.path.back(), end)) res.path.push_back(end);
+        finish_at_end(surface, tr, T, end, at_vertex ? corner : boost::graph_traits<typename Surface::Triangle_mesh>::null_halfedge(), res.path);
         break;
       }
     }
@@ -460,24 +318,28 @@ shortest_path_one_chart(const Surface& surface, const typename Surface::Path& pa
     const double da = internal::hyperbolic_distance(za, zx), db = internal::hyperbolic_distance(zx, zb);
     const double t = da / (da + db);
     if(t < options.vertex_snap || t > 1 - options.vertex_snap) {
-      const auto v = t < 0.5 ? source(h, tm) : target(h, tm);
+      const halfedge_descriptor reached = t < 0.5 ? prev(h, tm) : h; // the corner of the current face at the snapped vertex
+      // from a corner along a side to another corner: the side's midpoint keeps it apart from a turn
+      if(at_vertex && surface.needs_corners()) res.path.push_back(Point::on_edge(reached == next(corner, tm) ? reached : corner, 0.5));
+      corner = reached;
+      at_vertex = true;
       const Cplx zv = t < 0.5 ? za : zb;
       res.length += internal::distance_to_origin(zv);
-      const Point pv = Point::vertex(v);
-      if(!surface.same_point(res.path.back(), pv)) res.path.push_back(pv);
+      internal::append_point(surface, res.path, internal::vertex_point(surface, corner));
       // re-centre at the vertex and turn to the face containing the new direction
       const internal::Isometry m = internal::to_origin(zv);
       tr.transform(m);
       T = internal::apply_isometry(m, T);
-      const Cplx un = T / std::abs(T);
-      if(std::find(end_faces.begin(), end_faces.end(), tr.current_face()) != end_faces.end() && end.on_vertex && end.v == v &&
-         internal::distance_to_origin(T) < 1e-7) {
+      if(end.on_vertex && end.v == target(corner, tm) && internal::distance_to_origin(T) < 1e-7) {
+        if(surface.needs_corners() && end.has_corner() && end.h != corner) res.path.push_back(end);
         break;
       }
-      internal::rotate_to_direction(surface, tr, v, un);
+      corner = internal::rotate_to_direction(surface, tr, corner, T / std::abs(T));
+      if(surface.needs_corners()) internal::append_point(surface, res.path, surface.corner(corner));
     } else {
       res.length += internal::distance_to_origin(zx);
       res.path.push_back(Point::on_edge(h, t));
+      at_vertex = false;
       tr.unfold(h);
       const internal::Isometry m = internal::to_origin(zx);
       tr.transform(m);
@@ -486,6 +348,20 @@ shortest_path_one_chart(const Surface& surface, const typename Surface::Path& pa
   }
   res.embedded_faces = lifted + tr.count();
   return res;
+}
+
+
+// Algorithm 2 in one chart (the lifted path must stay within max_lift_distance of its start)
+template <class Surface>
+Shortest_path_result<typename Surface::Triangle_mesh>
+shortest_path_one_chart(const Surface& surface, const typename Surface::Path& path,
+                        const Shortest_path_options& options)
+{
+  const std::vector<typename Surface::Step> st = surface.steps(path);
+  if(path.size() == 1) { Shortest_path_result<typename Surface::Triangle_mesh> res; res.path = path; return res; }
+  std::size_t lifted = 0;
+  const Cplx T = lift_end_point(surface, path, st, options, lifted);
+  return trace_geodesic(surface, path.front(), st.front(), T, path.back(), options, lifted);
 }
 
 // Geodesic pieces on a stack: the path is cut into short chunks, each shortened in one chart; a new piece
@@ -499,7 +375,7 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
   typedef typename Surface::Path Path;
   std::vector<Path> stack;
   std::vector<double> lengths;
-  auto concat = [](const Path& a, const Path& b) { Path r(a); r.insert(r.end(), b.begin() + 1, b.end()); return r; };
+  auto concat = [](const Path& a, const Path& b) { Path r(a); r.back() = b.front(); r.insert(r.end(), b.begin() + 1, b.end()); return r; };
   std::function<void(const Path&)> push_chunk = [&](const Path& chunk) {
     Shortest_path_result<typename Surface::Triangle_mesh> piece;
     try {
@@ -545,14 +421,30 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
 // `max_rounds` rounds.
 template <class Surface>
 Shortest_path_result<typename Surface::Triangle_mesh>
+straighten_chained(const Surface& surface, typename Surface::Path cur, const Shortest_path_options& options,
+                   std::size_t faces);
+
+template <class Surface>
+Shortest_path_result<typename Surface::Triangle_mesh>
 shortest_path_chained(const Surface& surface, const typename Surface::Path& path, const Shortest_path_options& options)
 {
   typedef typename Surface::Path Path;
-  Shortest_path_result<typename Surface::Triangle_mesh> res;
   std::size_t faces = 0;
   const std::vector<Path> pieces = geodesic_pieces(surface, path, options, 0.5 * options.max_lift_distance, faces);
   Path cur = pieces.front();
-  for(std::size_t i = 1; i < pieces.size(); ++i) cur.insert(cur.end(), pieces[i].begin() + 1, pieces[i].end());
+  for(std::size_t i = 1; i < pieces.size(); ++i) { cur.back() = pieces[i].front(); cur.insert(cur.end(), pieces[i].begin() + 1, pieces[i].end()); }
+  return straighten_chained(surface, cur, options, faces);
+}
+
+// the Birkhoff rounds of `shortest_path_chained()` on a path made of geodesic pieces (`faces`: the faces
+// embedded so far, for the result and the progress callback)
+template <class Surface>
+Shortest_path_result<typename Surface::Triangle_mesh>
+straighten_chained(const Surface& surface, typename Surface::Path cur, const Shortest_path_options& options,
+                   std::size_t faces)
+{
+  typedef typename Surface::Path Path;
+  Shortest_path_result<typename Surface::Triangle_mesh> res;
   const double window = (std::min)(10.0, 0.4 * options.max_lift_distance);
   double prev = std::numeric_limits<double>::infinity();
   int quiet = 0, extra = 0;
@@ -577,6 +469,7 @@ shortest_path_chained(const Surface& surface, const typename Surface::Path& path
       if(acc < cut && i + 1 < cur.size()) continue;
       const Shortest_path_result<typename Surface::Triangle_mesh> r =
         shortest_path_one_chart(surface, Path(cur.begin() + std::ptrdiff_t(a), cur.begin() + std::ptrdiff_t(i) + 1), options);
+      next.back() = r.path.front(); // the same point, with the orientation the next segment needs
       next.insert(next.end(), r.path.begin() + 1, r.path.end());
       len += r.length;
       faces += r.embedded_faces;
@@ -662,7 +555,7 @@ shortened_homotopic_path(const Surface& surface, const typename Surface::Path& p
   const std::vector<typename Surface::Path> pieces =
     internal::geodesic_pieces(surface, path, options, 0.5 * options.max_lift_distance, faces);
   typename Surface::Path r = pieces.front();
-  for(std::size_t i = 1; i < pieces.size(); ++i) r.insert(r.end(), pieces[i].begin() + 1, pieces[i].end());
+  for(std::size_t i = 1; i < pieces.size(); ++i) { r.back() = pieces[i].front(); r.insert(r.end(), pieces[i].begin() + 1, pieces[i].end()); }
   return r;
 }
 
@@ -722,7 +615,8 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
       if(dist < best) { best = dist; mid = i; }
     }
     Path rebased(p.begin() + mid, p.end());
-    rebased.insert(rebased.end(), p.begin() + 1, p.begin() + mid + 1);
+    // (through p.front() too where corners matter: p.back() -> p.front() is then a turn at the vertex)
+    rebased.insert(rebased.end(), p.begin() + (surface.needs_corners() ? 0 : 1), p.begin() + mid + 1);
     Shortest_path_result<typename Surface::Triangle_mesh> n = shortest_homotopic_path(surface, rebased, options);
     faces += n.embedded_faces;
     n.iterations = r.iterations + 1;
@@ -740,7 +634,8 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
   \ingroup PkgSurfaceShortestWordsRef
   `shortest_homotopic_loop()` with CGAL named parameters: `CGAL::parameters::number_of_iterations(n)` (the
   maximum number of re-basing iterations, default 200), `Surface_shortest_words::parameters::tolerance(t)`
-  (default 1e-12), `max_lift_distance(d)` (default 25), `vertex_snap(s)` (default 1e-9). Example:
+  (default 1e-12), `max_lift_distance(d)` (default 25), `vertex_snap(s)` (default 1e-9), CGAL's
+  `callback(f)` (progress: `f(faces processed)`). Example:
   `shortest_homotopic_loop(surface, loop, SSW::parameters::tolerance(1e-10, CGAL::parameters::number_of_iterations(50)))`.
   \throws CGAL::Invalid_option_error for a negative or non-finite tolerance, zero iterations, or an option
   out of its range (see `check_options()`).
@@ -752,18 +647,40 @@ shortest_homotopic_loop(const Surface& surface, const typename Surface::Path& lo
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  internal::check_path_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>, true>();
   const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 200));
   if(!(n >= 1) || !std::isfinite(n)) throw CGAL::Invalid_option_error("shortest_homotopic_loop: number_of_iterations must be >= 1");
   const double tol = choose_parameter(get_parameter(np, internal_np::ssw_tolerance_t_v), 1e-12);
   return shortest_homotopic_loop(surface, loop, tol, std::size_t(n), path_options(np));
 }
 
-/// `shortest_homotopic_path()` with named parameters `max_lift_distance`, `vertex_snap`
+/// `shortest_loop_through_base()` with named parameters `max_lift_distance`, `vertex_snap`, `callback`
+template <class Surface, class T, class Tag, class Base>
+Shortest_path_result<typename Surface::Triangle_mesh>
+shortest_loop_through_base(const Surface& surface, const typename Surface::Path& loop,
+                           const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  internal::check_path_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>, false>();
+  return shortest_loop_through_base(surface, loop, path_options(np));
+}
+
+/// `shortened_homotopic_path()` with named parameters `max_lift_distance`, `vertex_snap`, `callback`
+template <class Surface, class T, class Tag, class Base>
+typename Surface::Path
+shortened_homotopic_path(const Surface& surface, const typename Surface::Path& path,
+                         const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  internal::check_path_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>, false>();
+  return shortened_homotopic_path(surface, path, path_options(np));
+}
+
+/// `shortest_homotopic_path()` with named parameters `max_lift_distance`, `vertex_snap`, `callback`
 template <class Surface, class T, class Tag, class Base>
 Shortest_path_result<typename Surface::Triangle_mesh>
 shortest_homotopic_path(const Surface& surface, const typename Surface::Path& path,
                         const CGAL::Named_function_parameters<T, Tag, Base>& np)
 {
+  internal::check_path_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>, false>();
   return shortest_homotopic_path(surface, path, path_options(np));
 }
 
