@@ -79,10 +79,10 @@ protected:
 
   void set_epsilon(double epsilon, const char* who)
   {
-    if(!(epsilon > 0)) throw std::invalid_argument(std::string(who) + ": epsilon must be > 0 (or +infinity)");
+    if(!(epsilon > 0)) throw CGAL::Invalid_option_error(std::string(who) + ": epsilon must be > 0 (or +infinity)");
     const double sh = std::sinh(epsilon), ch = std::cosh(epsilon);
     if(std::isfinite(epsilon) && !std::isfinite(ch * ch))
-      throw std::invalid_argument(std::string(who) + ": epsilon too large (sinh^2 overflows); use infinity");
+      throw CGAL::Invalid_option_error(std::string(who) + ": epsilon too large (sinh^2 overflows); use infinity");
     epsilon_ = epsilon;
     sinh2_epsilon_ = std::isfinite(epsilon) ? FT(sh * sh) : FT(0);
     cosh2_epsilon_ = std::isfinite(epsilon) ? ch * ch : 0;
@@ -213,14 +213,14 @@ public:
 
   /// `alpha`: minimum central angle of the shortest edge, radians, 0 < alpha <= 2 pi / 3 (an equilateral
   /// triangle has central angles 2 pi / 3); `epsilon`: maximum hyperbolic circumradius (> 0; +infinity: none).
-  /// Throws `std::invalid_argument` otherwise.
+  /// Throws `CGAL::Invalid_option_error` otherwise.
   explicit Hyperbolic_Ruppert_mesh_criteria_2(double alpha = 0.6,
                                               double epsilon = std::numeric_limits<double>::infinity(),
                                               const Geom_traits& gt = Geom_traits())
     : Base(epsilon, gt, "Hyperbolic_Ruppert_mesh_criteria_2")
   {
     if(!(alpha > 0 && alpha <= 2.0 * std::acos(-1.0) / 3.0 + 1e-12))
-      throw std::invalid_argument("Hyperbolic_Ruppert_mesh_criteria_2: alpha must be in (0, 2 pi / 3], got " +
+      throw CGAL::Invalid_option_error("Hyperbolic_Ruppert_mesh_criteria_2: alpha must be in (0, 2 pi / 3], got " +
                                   std::to_string(alpha));
     set_alpha(alpha);
   }
@@ -231,14 +231,14 @@ public:
                                                                  const Geom_traits& gt = Geom_traits())
   {
     if(!(B > 0 && B <= 0.75))
-      throw std::invalid_argument("Hyperbolic_Ruppert_mesh_criteria_2: B = sin^2(alpha/2) must be in (0, 3/4]");
+      throw CGAL::Invalid_option_error("Hyperbolic_Ruppert_mesh_criteria_2: B = sin^2(alpha/2) must be in (0, 3/4]");
     Hyperbolic_Ruppert_mesh_criteria_2 c(Hyperbolic_mesh_2::central_angle_from_sin2_half(B), epsilon, gt);
     c.sin2_half_alpha_ = B; // exactly the user's number (no round trip through asin / sin)
     return c;
   }
 
   /// Criteria whose maximum circumradius is chosen so that the termination condition of Theorem 3.2 holds
-  /// (0.999 times `Ruppert_maximum_circumradius(alpha)`, or `epsilon` if smaller). Throws `std::invalid_argument`
+  /// (0.999 times `Ruppert_maximum_circumradius(alpha)`, or `epsilon` if smaller). Throws `CGAL::Invalid_option_error`
   /// if no positive radius works (alpha >= 41.41 degrees).
   static Hyperbolic_Ruppert_mesh_criteria_2 with_automatic_circumradius(double alpha,
                                                                         double epsilon = std::numeric_limits<double>::infinity(),
@@ -246,7 +246,7 @@ public:
   {
     const double r = Hyperbolic_mesh_2::Ruppert_maximum_circumradius(alpha);
     if(!(r > 0))
-      throw std::invalid_argument("Hyperbolic_Ruppert_mesh_criteria_2: no maximum circumradius makes Ruppert's "
+      throw CGAL::Invalid_option_error("Hyperbolic_Ruppert_mesh_criteria_2: no maximum circumradius makes Ruppert's "
                                   "termination condition hold for alpha >= 41.41 degrees");
     return Hyperbolic_Ruppert_mesh_criteria_2(alpha, std::min(epsilon, 0.999 * r), gt);
   }
@@ -344,7 +344,7 @@ public:
   typedef Hyperbolic_mesh_2::internal::Is_bad_functor<Hyperbolic_Chew_mesh_criteria_2> Is_bad;
 
   /// `epsilon`: maximum hyperbolic circumradius (> 0; +infinity: only the angle criterion). Throws
-  /// `std::invalid_argument` otherwise.
+  /// `CGAL::Invalid_option_error` otherwise.
   explicit Hyperbolic_Chew_mesh_criteria_2(double epsilon = std::numeric_limits<double>::infinity(),
                                            const Geom_traits& gt = Geom_traits())
     : Base(epsilon, gt, "Hyperbolic_Chew_mesh_criteria_2")

@@ -9,6 +9,7 @@
 #ifndef CGAL_POINCARE_DISK_ISOMETRY_2_H
 #define CGAL_POINCARE_DISK_ISOMETRY_2_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Poincare_disk_traits_2/internal/checks.h>
 
@@ -34,12 +35,12 @@ public:
   /// the identity
   Poincare_disk_isometry_2() : ar_(1), ai_(0), br_(0), bi_(0) {}
 
-  /// the map with alpha = ar + i ai, beta = br + i bi; throws `std::invalid_argument` unless |alpha| > |beta|.
+  /// the map with alpha = ar + i ai, beta = br + i bi; throws `CGAL::Invalid_input_error` unless |alpha| > |beta|.
   Poincare_disk_isometry_2(const FT& ar, const FT& ai, const FT& br, const FT& bi)
     : ar_(ar), ai_(ai), br_(br), bi_(bi)
   {
     if(!(determinant() > FT(0)))
-      throw std::invalid_argument("Poincare_disk_isometry_2: |alpha|^2 - |beta|^2 must be positive");
+      throw CGAL::Invalid_input_error("Poincare_disk_isometry_2: |alpha|^2 - |beta|^2 must be positive");
   }
 
   /// the hyperbolic translation taking `a` to the origin: z -> (z - a) / (1 - conj(a) z).

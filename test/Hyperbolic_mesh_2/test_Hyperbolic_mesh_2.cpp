@@ -295,8 +295,8 @@ CGAL_HC_TEST_CASE(quality_bounds_thesis_values)
   CGAL_HC_CHECK(rb > 0.5 && rb < 2);
   CGAL_HC_CHECK(HM::Ruppert_termination_margin(0.99 * rb, deg(30)) > 0);
   CGAL_HC_CHECK(HM::Ruppert_termination_margin(1.01 * rb, deg(30)) < 0);
-  CGAL_HC_CHECK_THROWS(HM::theta_star(-1), std::invalid_argument);
-  CGAL_HC_CHECK_THROWS(HM::rho(1, 4), std::invalid_argument);
+  CGAL_HC_CHECK_THROWS(HM::theta_star(-1), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(HM::rho(1, 4), CGAL::Invalid_option_error);
 }
 
 // ------------------------------------------------------------------ Ruppert
@@ -347,7 +347,7 @@ CGAL_HC_TEST_CASE(Ruppert_termination_report)
   Check_options o; o.B = std::pow(std::sin(deg(15)), 2); o.eps = c.epsilon(); o.input = &g;
   check_output(cdt, st, o);
   // alpha = 41.5 deg: no radius works
-  CGAL_HC_CHECK_THROWS(Ruppert_criteria::with_automatic_circumradius(deg(41.5)), std::invalid_argument);
+  CGAL_HC_CHECK_THROWS(Ruppert_criteria::with_automatic_circumradius(deg(41.5)), CGAL::Invalid_option_error);
   CGAL_HC_CHECK(!Ruppert_criteria(deg(41.5), 0.1).termination_guaranteed());
 }
 
@@ -496,12 +496,12 @@ CGAL_HC_TEST_CASE(invalid_input_is_rejected)
   CGAL_HC_CHECK_THROWS(HM::insert_geodesic_pslg(cdt, y, std::vector<std::pair<int, int> >{{1, 1}}), HM::Input_error);
   CGAL_HC_CHECK(cdt.number_of_vertices() == 0); // nothing inserted on failure
   // criteria out of range
-  CGAL_HC_CHECK_THROWS(Ruppert_criteria(0.0), std::invalid_argument);
-  CGAL_HC_CHECK_THROWS(Ruppert_criteria(deg(130)), std::invalid_argument);
-  CGAL_HC_CHECK_THROWS(Ruppert_criteria(deg(30), -1.0), std::invalid_argument);
-  CGAL_HC_CHECK_THROWS(Ruppert_criteria(deg(30), std::nan("")), std::invalid_argument);
-  CGAL_HC_CHECK_THROWS(Chew_criteria(0.0), std::invalid_argument);
-  CGAL_HC_CHECK_THROWS(Ruppert_criteria::from_sin2_half_angle(0.9), std::invalid_argument);
+  CGAL_HC_CHECK_THROWS(Ruppert_criteria(0.0), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Ruppert_criteria(deg(130)), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Ruppert_criteria(deg(30), -1.0), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Ruppert_criteria(deg(30), std::nan("")), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Chew_criteria(0.0), CGAL::Invalid_option_error);
+  CGAL_HC_CHECK_THROWS(Ruppert_criteria::from_sin2_half_angle(0.9), CGAL::Invalid_option_error);
   // a triangulation of dimension < 2, a seed outside the disk
   CDT small; small.insert(Point(0, 0)); small.insert(Point(0.1, 0));
   CGAL_HC_CHECK_THROWS(CGAL::refine_hyperbolic_Ruppert_mesh_2(small, Ruppert_criteria(deg(30))), HM::Input_error);

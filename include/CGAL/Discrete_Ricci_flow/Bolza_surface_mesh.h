@@ -5,6 +5,7 @@
 #ifndef CGAL_DISCRETE_RICCI_FLOW_BOLZA_SURFACE_MESH_H
 #define CGAL_DISCRETE_RICCI_FLOW_BOLZA_SURFACE_MESH_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <array>
@@ -32,7 +33,7 @@ template <class Point_3>
 CGAL::Surface_mesh<Point_3> make_Bolza_surface_mesh(int n)
 {
   typedef CGAL::Surface_mesh<Point_3> Mesh;
-  if(n < 1) throw std::invalid_argument("make_Bolza_surface_mesh: n must be positive");
+  if(n < 1) throw CGAL::Invalid_option_error("make_Bolza_surface_mesh: n must be positive");
   Mesh m;
   typedef std::array<int, 3> IP; // integer coordinates n * p
   const IP X{n, 0, 0}, mX{-n, 0, 0}, Y{0, n, 0}, mY{0, -n, 0}, Z{0, 0, n}, mZ{0, 0, -n};

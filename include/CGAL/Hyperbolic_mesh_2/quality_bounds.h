@@ -7,6 +7,7 @@
 #ifndef CGAL_HYPERBOLIC_MESH_2_QUALITY_BOUNDS_H
 #define CGAL_HYPERBOLIC_MESH_2_QUALITY_BOUNDS_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -27,7 +28,7 @@ constexpr double Chew_termination_bound = 2.3101;
 /// \pre h >= 0 (h = 0 gives the limit pi/3).
 inline double theta_star(double h)
 {
-  if(!(h >= 0)) throw std::invalid_argument("theta_star: h must be >= 0");
+  if(!(h >= 0)) throw CGAL::Invalid_option_error("theta_star: h must be >= 0");
   if(h == 0) return std::acos(0.5);
   const double c = std::cosh(h);
   if(!std::isfinite(c)) return 0.0;
@@ -40,7 +41,7 @@ inline double theta_star(double h)
 /// rho(2.3101) = 1.5. O(1). \pre h >= 0 (h = 0 gives the limit sqrt(3)).
 inline double rho(double h)
 {
-  if(!(h >= 0)) throw std::invalid_argument("rho: h must be >= 0");
+  if(!(h >= 0)) throw CGAL::Invalid_option_error("rho: h must be >= 0");
   if(h < 1e-6) return std::sqrt(3.0) * (1.0 - h * h / 16.0); // series, avoids 0/0
   if(h > 60) return 1.0 + 2.0 * std::log(2.0) / h; // d(A, B) = h + 2 ln 2 + O(e^-h)
   const double c = std::cosh(h), sin_theta = std::sqrt(2.0 * c + 1.0) / (c + 1.0); // sin theta*(h)
@@ -53,9 +54,9 @@ inline double rho(double h)
 /// O(1). \pre r >= 0, 0 <= theta <= pi.
 inline double rho(double r, double theta)
 {
-  if(!(r >= 0)) throw std::invalid_argument("rho(r, theta): r must be >= 0");
+  if(!(r >= 0)) throw CGAL::Invalid_option_error("rho(r, theta): r must be >= 0");
   if(!(theta >= 0 && theta <= 3.14159265358979323846 + 1e-12))
-    throw std::invalid_argument("rho(r, theta): theta must be in [0, pi]");
+    throw CGAL::Invalid_option_error("rho(r, theta): theta must be in [0, pi]");
   const double s = std::sin(theta / 2);
   if(r < 1e-6) return 2.0 * s;
   // cosh^2 r - sinh^2 r cos theta = 1 + 2 sinh^2 r sin^2(theta/2); acosh(1 + x) = 2 asinh(sqrt(x / 2))
@@ -82,7 +83,7 @@ inline double Ruppert_termination_margin(double r_bar, double alpha)
 inline double Ruppert_maximum_circumradius(double alpha)
 {
   if(!(alpha > 0 && alpha <= 3.14159265358979323846))
-    throw std::invalid_argument("Ruppert_maximum_circumradius: alpha must be in (0, pi]");
+    throw CGAL::Invalid_option_error("Ruppert_maximum_circumradius: alpha must be in (0, pi]");
   if(Ruppert_termination_margin(0.0, alpha) <= 0) return 0.0;
   double lo = 0.0, hi = 1.0;
   while(Ruppert_termination_margin(hi, alpha) > 0 && hi < 1e6) hi *= 2;
@@ -99,7 +100,7 @@ inline double Ruppert_maximum_circumradius(double alpha)
 inline double central_angle_from_sin2_half(double sin2_half_alpha)
 {
   if(!(sin2_half_alpha > 0 && sin2_half_alpha <= 1))
-    throw std::invalid_argument("central_angle_from_sin2_half: need 0 < sin^2(alpha/2) <= 1");
+    throw CGAL::Invalid_option_error("central_angle_from_sin2_half: need 0 < sin^2(alpha/2) <= 1");
   return 2.0 * std::asin(std::sqrt(sin2_half_alpha));
 }
 

@@ -49,10 +49,10 @@ using CGAL::Invalid_path_error;
 /// Thrown when a computation needs more precision than double arithmetic offers (the lifted end point of a
 /// path lies farther than `max_lift_distance` from its start in the universal cover), or does not terminate
 /// within its step bound.
-class Precision_error : public std::runtime_error
+class Precision_error : public CGAL::Numerical_error
 {
 public:
-  explicit Precision_error(const std::string& w) : std::runtime_error(w) {}
+  explicit Precision_error(const std::string& w) : CGAL::Numerical_error(w) {}
 };
 
 /*!

@@ -6,6 +6,7 @@
 #ifndef CGAL_SURFACE_SHORTEST_WORDS_REGULAR_POLYGON_SURFACE_H
 #define CGAL_SURFACE_SHORTEST_WORDS_REGULAR_POLYGON_SURFACE_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/Surface_shortest_words/internal/layout.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -60,8 +61,8 @@ public:
   /// builds the surface of genus `g >= 2` with subdivision `m >= 3`; throws `std::invalid_argument` otherwise
   Regular_polygon_surface(int g, int m) : g_(g), m_(m)
   {
-    if(g < 2) throw std::invalid_argument("Regular_polygon_surface: genus must be >= 2");
-    if(m < 3) throw std::invalid_argument("Regular_polygon_surface: subdivision must be >= 3");
+    if(g < 2) throw CGAL::Invalid_option_error("Regular_polygon_surface: genus must be >= 2");
+    if(m < 3) throw CGAL::Invalid_option_error("Regular_polygon_surface: subdivision must be >= 3");
     const int n = 4 * g;
     const double coshR = std::pow(1.0 / std::tan(CGAL_PI / n), 2);
     const double r = std::tanh(std::acosh(coshR) / 2.0);
