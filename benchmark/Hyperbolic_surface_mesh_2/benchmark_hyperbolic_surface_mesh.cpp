@@ -5,7 +5,9 @@
 //     Periodic_4_hyperbolic_Delaunay_triangulation_2;
 //  3. vertex counts at epsilon = 0.1, 0.05, 0.01 on genus-2 surfaces (Bolza octagon, eight.off), size only
 //     (alpha = 1e-6), alpha = 30 degrees, and Chew.
-// Usage: benchmark_hyperbolic_surface_mesh [--large]   (--large: 1e6 triangles and 1e6 points)
+// Usage: benchmark_hyperbolic_surface_mesh [--large]   (--large: 1e6 triangles and 3e5, 1e6 points)
+//        benchmark_hyperbolic_surface_mesh --refine GENUS EPSILON   (our Chew refinement only, for profilers)
+//        benchmark_hyperbolic_surface_mesh --insert N               (the Bolza insertion comparison only)
 // Output: one "key value ..." line per measurement.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -23,6 +25,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -122,14 +125,23 @@ static void counts(const char* name, DT t0)
 
 int main(int argc, char** argv)
 {
+  if(argc > 3 && std::strcmp(argv[1], "--refine") == 0) {
+    DT t(HSM::Fundamental_polygon<K>::regular(std::atoi(argv[2])));
+    const auto st = HSM::refine_Chew(t, HSMP::maximum_circumradius(std::atof(argv[3])));
+    std::cout << "refine faces " << st.final_faces << " seconds " << st.seconds << " triangles_per_s "
+              << double(st.final_faces) / st.seconds << " status " << HSM::to_string(st.status) << std::endl;
+    return 0;
+  }
+  if(argc > 2 && std::strcmp(argv[1], "--insert") == 0) { bolza_insertion(std::size_t(std::atof(argv[2]))); return 0; }
   const bool large = argc > 1 && std::strcmp(argv[1], "--large") == 0;
   // 1. throughput
   for(double eps : {0.02, 0.01}) throughput(2, eps);
   for(double eps : {0.02, 0.0125}) throughput(4, eps);
   if(large) { throughput(2, 0.004); throughput(4, 0.007); }
   // 2. Bolza insertion
-  for(std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(100000)}) bolza_insertion(n);
-  if(large) bolza_insertion(1000000);
+  // n random points of a square, of which about 69.5% fall in the octagon (the accepted points are inserted)
+  for(std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(144000)}) bolza_insertion(n);
+  if(large) { bolza_insertion(432000); bolza_insertion(1440000); }
   // 3. vertex counts, Chew versus Ruppert
   counts("bolza", DT(HSM::Fundamental_polygon<K>::Bolza()));
   typedef CGAL::Surface_mesh<K::Point_3> Mesh;

@@ -137,21 +137,16 @@ public:
   /// a face incident to `v` and the corner of `v` in it
   std::pair<Face_index, int> incident_face(Vertex_index v) const { return {vertices_[v].face, vertices_[v].corner}; }
 
-  /// the isometry from the chart of `f` to the chart of `neighbor(f, i)` (lift of edge i onto its other lift)
-  Isometry_2 transition(Face_index f, int i) const
-  {
-    const Face& F = faces_[f];
-    const Face& G = faces_[F.nb[i]];
-    const int j = F.ne[i];
-    return Geometry::isometry_from_pairs(F.z[i], F.z[(i + 1) % 3], G.z[(j + 1) % 3], G.z[j]);
-  }
+  /// the isometry from the chart of `f` to the chart of `neighbor(f, i)` (lift of edge i onto its other lift).
+  /// Cached per edge (computed once from the two charts, the reverse transition stored as its inverse, so the two
+  /// sides of an edge agree exactly); the cache of an edge is dropped whenever a face on it is rebuilt or
+  /// relinked. The cache makes the const accessors non-reentrant: do not share one triangulation between threads.
+  Isometry_2 transition(Face_index f, int i) const { return cached_transition(f, i); }
   /// the apex of `neighbor(f, i)` (its corner off edge i) in the chart of `f`
   Point_2 neighbor_apex(Face_index f, int i) const
   {
-    const Face& F = faces_[f];
-    const Face& G = faces_[F.nb[i]];
-    const int j = F.ne[i];
-    return Geometry::isometry_from_pairs(G.z[(j + 1) % 3], G.z[j], F.z[i], F.z[(i + 1) % 3]).apply_unchecked(G.z[(j + 2) % 3]);
+    const Face& G = faces_[faces_[f].nb[i]];
+    return cached_transition(f, i).inverse().apply_unchecked(G.z[(faces_[f].ne[i] + 2) % 3]);
   }
   /// hyperbolic length of edge i of f (from its chart)
   double edge_length(Face_index f, int i) const { return Geometry::distance(faces_[f].z[i], faces_[f].z[(i + 1) % 3]); }
@@ -307,6 +302,8 @@ private:
     Isometry_2 to_ref;
     std::size_t version = 0;
     bool alive = true;
+    mutable std::array<Isometry_2, 3> tr; // transition cache (see transition()); bit i of tr_ok: tr[i] valid
+    mutable unsigned char tr_ok = 0;
   };
   struct Vertex
   {
@@ -340,8 +337,20 @@ private:
 
   void link(Face_index a, int i, Face_index b, int j)
   {
-    faces_[a].nb[i] = b; faces_[a].ne[i] = (unsigned char)j;
-    faces_[b].nb[j] = a; faces_[b].ne[j] = (unsigned char)i;
+    faces_[a].nb[i] = b; faces_[a].ne[i] = (unsigned char)j; faces_[a].tr_ok &= (unsigned char)~(1u << i);
+    faces_[b].nb[j] = a; faces_[b].ne[j] = (unsigned char)i; faces_[b].tr_ok &= (unsigned char)~(1u << j);
+  }
+  const Isometry_2& cached_transition(Face_index f, int i) const
+  {
+    const Face& F = faces_[f];
+    if(!((F.tr_ok >> i) & 1u)) {
+      const Face& G = faces_[F.nb[i]];
+      const int j = F.ne[i];
+      F.tr[i] = Geometry::isometry_from_pairs(F.z[i], F.z[(i + 1) % 3], G.z[(j + 1) % 3], G.z[j]);
+      F.tr_ok |= (unsigned char)(1u << i);
+      if(&G != &F || j != i) { G.tr[j] = F.tr[i].inverse(); G.tr_ok |= (unsigned char)(1u << j); }
+    }
+    return F.tr[i];
   }
   /// sets face f to the triangle (a, b, c) of a common chart whose anchor is (ref, chart_to_ref); recentres it
   void set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,

@@ -162,7 +162,8 @@ public:
 private:
   void push(Face_index f)
   {
-    if(q_.is_bad(f)) queue_.push(Entry{q_.circumradius(f), f, t_.version(f)});
+    const auto ev = q_.evaluate(f);
+    if(ev.bad) queue_.push(Entry{ev.key, f, t_.version(f)});
   }
 
   Refinement_status step(const Entry& e, Refinement_statistics& st, bool simplicial = false)
@@ -270,7 +271,8 @@ Refinement_statistics refine_Ruppert(DT& t, const NamedParameters& np = CGAL::pa
   \ingroup PkgHyperbolicSurfaceMesh2Ref
   Generalized Chew refinement on the surface (thesis Algorithm 5, without input segments): a face is poor if its
   circumradius r exceeds epsilon (exact predicate) or the central angle of its shortest edge is below theta*(r),
-  i.e. its shortest edge is shorter than r (decided in double precision with a relative margin of 1e-12).
+  i.e. its shortest edge is shorter than r (exact: the sign of a polynomial in the chart's coordinates,
+  `internal::Chew_shape_polynomial`, filtered, with an exact rational fallback).
   Termination is guaranteed for h* = epsilon < 2.3101 (thesis Theorem 3.1); the statistics report it. The rest
   as `refine_Ruppert()` (alpha is ignored).
 */

@@ -30,6 +30,7 @@ void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, co
   const Isometry_2 t = Isometry_2::translation_to_origin(Geometry::barycenter(a, b, c));
   F.z = {{t.apply_unchecked(a), t.apply_unchecked(b), t.apply_unchecked(c)}};
   F.v = {{va, vb, vc}};
+  F.tr_ok = 0; // the callers relink all three edges (which drops the neighbours' cached transitions too)
   F.ref = ref;
   F.to_ref = (chart_to_ref * t.inverse()).normalized();
   // keep the anchor near: walk the barycentre (the chart's origin) in the reference triangulation
@@ -74,6 +75,7 @@ void CGAL_HSM2_DT::build_from_polygon(const Fundamental_polygon<Kernel>& P)
     if(s < s2) { const Edge_ref a = side(s), b = side(s2); link(a.first, a.second, b.first, b.second); }
   }
   for(std::size_t t = 0; t + 2 < n; ++t) { ref_.faces[t].nb = faces_[t].nb; ref_.faces[t].ne = faces_[t].ne; }
+  ref_.cache_transitions();
   finish_construction();
 }
 
@@ -108,6 +110,7 @@ void CGAL_HSM2_DT::build_from_surface(const ST& st)
     ref_hint_[f] = f;
     ref_.faces[f].z = F.z; ref_.faces[f].nb = F.nb; ref_.faces[f].ne = F.ne;
   }
+  ref_.cache_transitions();
   // frames: development along a breadth-first spanning tree of the faces
   std::vector<char> seen(charts.size(), 0);
   std::deque<Face_index> queue(1, 0);

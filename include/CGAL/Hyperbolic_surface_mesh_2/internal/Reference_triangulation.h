@@ -46,11 +46,23 @@ struct Reference_triangulation
     std::array<std::size_t, 3> nb;     // neighbour across edge i (z[i] -> z[i+1])
     std::array<unsigned char, 3> ne;   // index of the same edge in the neighbour
     Isometry_2 to_frame;               // chart -> frame of the fundamental domain
+    std::array<Isometry_2, 3> tr;      // transitions (after cache_transitions())
   };
   std::vector<Face> faces;
+  bool cached = false;
+
+  /// computes every transition once (the reference triangulation is frozen after construction)
+  void cache_transitions()
+  {
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(int i = 0; i < 3; ++i) faces[f].tr[i] = compute_transition(f, i);
+    cached = true;
+  }
 
   /// the isometry from the chart of `f` to the chart of its neighbour across edge `i`
-  Isometry_2 transition(std::size_t f, int i) const
+  Isometry_2 transition(std::size_t f, int i) const { return cached ? faces[f].tr[i] : compute_transition(f, i); }
+
+  Isometry_2 compute_transition(std::size_t f, int i) const
   {
     const Face& F = faces[f];
     const Face& G = faces[F.nb[i]];

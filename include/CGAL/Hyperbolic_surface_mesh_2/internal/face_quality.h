@@ -8,6 +8,9 @@
 #define CGAL_HYPERBOLIC_SURFACE_MESH_2_INTERNAL_FACE_QUALITY_H
 
 #include <CGAL/Hyperbolic_surface_2/hyperbolic_triangle.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/Bounded_double.h>
+#include <CGAL/Poincare_disk_traits_2/internal/filtered_evaluation.h>
+#include <CGAL/Poincare_disk_traits_2/internal/polynomials.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +22,55 @@
 namespace CGAL {
 namespace Hyperbolic_surface_mesh_2 {
 namespace internal {
+
+/// The quantities of a triangle (p, q, r) of Poincare coordinates that the criteria compare, for any number type
+/// of the evaluation stages (Bounded_double, Interval_nt, exact rationals): the circle coefficients (traits'
+/// `Circle_coefficients`: the circle is compact iff delta > 0, sinh^2 h = sinh2 / delta, cosh^2 h =
+/// (A - G)^2 / delta), nn = (1 - |p|^2)(1 - |q|^2)(1 - |r|^2) and a_min = sinh^2(d_min / 2) nn for the
+/// shortest edge d_min (chosen by comparisons that throw `Uncertain_conversion_exception` when undecided).
+template <class NT>
+struct Triangle_terms
+{
+  Poincare_disk_internal::Circle_coefficients<NT> cc;
+  NT delta, sinh2, nn, a_min;
+  Triangle_terms(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry)
+    : cc(px, py, qx, qy, rx, ry), delta(cc.delta()), sinh2(cc.sinh2_numerator())
+  {
+    using namespace Poincare_disk_internal;
+    const NT np = lift_n(px, py), nq = lift_n(qx, qy), nr = lift_n(rx, ry);
+    nn = np * nq * nr;
+    // sinh^2(d/2) = |x - y|^2 / (n_x n_y): times nn, the edge pq gives |p - q|^2 n_r
+    const NT apq = squared_euclidean(px, py, qx, qy) * nr, aqr = squared_euclidean(qx, qy, rx, ry) * np,
+             arp = squared_euclidean(rx, ry, px, py) * nq;
+    if(bool(apq <= aqr) && bool(apq <= arp)) a_min = apq;
+    else a_min = bool(aqr <= arp) ? aqr : arp;
+  }
+};
+
+/// Chew's shape test, exact: POSITIVE iff the shortest edge d_min is shorter than the circumradius h (the
+/// central angle of the shortest edge is below theta*(h)), for a compact circumcircle (else NEGATIVE: no
+/// circumradius; the size test already calls the face poor). With cosh d_min = 1 + 2 a_min / nn:
+///   d_min < h  <=>  (2 a_min + nn)^2 / nn^2 < (A - G)^2 / delta  <=>  (A - G)^2 nn^2 - (2 a_min + nn)^2 delta > 0.
+struct Chew_shape_polynomial
+{
+  template <class NT>
+  auto operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
+  {
+    const Triangle_terms<NT> t(px, py, qx, qy, rx, ry);
+    typedef decltype(sign_of(t.delta)) Result;
+    if(!bool(sign_of(t.delta) == POSITIVE)) return Result(NEGATIVE);
+    const NT amg = t.cc.A - t.cc.G, w = NT(2) * t.a_min + t.nn;
+    return Result(sign_of(amg * amg * t.nn * t.nn - w * w * t.delta));
+  }
+};
+
+/// the exact Chew shape test on double coordinates: interval arithmetic, then exact rationals
+template <class Point_2>
+bool chew_shape_is_poor(const Point_2& p, const Point_2& q, const Point_2& r)
+{
+  return Poincare_disk_internal::Exact_evaluator<double>::eval(Chew_shape_polynomial(), p.x(), p.y(), q.x(), q.y(),
+                                                               r.x(), r.y()) == POSITIVE;
+}
 
 template <class DT>
 class Face_quality
@@ -65,14 +117,52 @@ public:
     return 2 * std::asin((std::min)(1.0, s));
   }
 
-  /// the poor-face test of the criterion
-  bool is_bad(Face_index f) const
+  /// The poor-face test and the queue key (the circumradius, +infinity if not compact) of f, in one pass:
+  /// first in Bounded_double arithmetic (a rigorous error bound, no rounding-mode switch), and where that
+  /// cannot decide, by `is_bad_exact()` (the traits' predicates, interval then exact). Every decision is exact.
+  struct Evaluation { bool bad; double key; };
+  Evaluation evaluate(Face_index f) const
   {
     const auto& z = t_.lift(f);
+    Evaluation r;
+    if(fast_evaluate(z[0], z[1], z[2], r)) return r;
+    return {is_bad_exact(z[0], z[1], z[2]), circumradius(f)};
+  }
+  /// `evaluate().bad` on a triangle of the disk
+  bool evaluate_points(const Point_2& p, const Point_2& q, const Point_2& r) const
+  {
+    Evaluation ev;
+    return fast_evaluate(p, q, r, ev) ? ev.bad : is_bad_exact(p, q, r);
+  }
+  /// the Bounded_double stage of `evaluate()` on a triangle of the disk: false if it cannot decide
+  bool fast_evaluate(const Point_2& p, const Point_2& q, const Point_2& r, Evaluation& ev) const
+  {
+    typedef Bounded_double BD;
+    const BD px(p.x()), py(p.y()), qx(q.x()), qy(q.y()), rx(r.x()), ry(r.y());
+    try {
+      const Triangle_terms<BD> t(px, py, qx, qy, rx, ry);
+      if(!bool(t.delta.sign() == POSITIVE)) { ev = {true, std::numeric_limits<double>::infinity()}; return true; }
+      ev.key = std::asinh(std::sqrt((std::max)(0.0, t.sinh2.v / t.delta.v)));
+      // size: cosh^2 h > cosh^2 eps  <=>  sinh2 - (cosh^2 eps - 1) delta > 0 (the traits' polynomial)
+      if(bool((t.sinh2 - (BD(cosh2_eps_) - BD(1)) * t.delta).sign() == POSITIVE)) { ev.bad = true; return true; }
+      if(chew_) ev.bad = bool(Chew_shape_polynomial()(px, py, qx, qy, rx, ry) == POSITIVE);
+      // Ruppert: sin^2(theta / 2) = a_min delta / (sinh2 nn) < sin^2(alpha / 2) (the traits' polynomial)
+      else ev.bad = bool((t.a_min * t.delta - BD(sin2_half_alpha_) * t.sinh2 * t.nn).sign() == NEGATIVE);
+      return true;
+    } catch(Uncertain_conversion_exception&) {
+      return false;
+    }
+  }
+  /// the poor-face test of the criterion
+  bool is_bad(Face_index f) const { return evaluate(f).bad; }
+  /// the same test decided by the traits' predicates (and, for Chew, `chew_shape_is_poor()`) only
+  bool is_bad_exact(Face_index f) const { const auto& z = t_.lift(f); return is_bad_exact(z[0], z[1], z[2]); }
+  bool is_bad_exact(const Point_2& p, const Point_2& q, const Point_2& r) const
+  {
     const auto& gt = t_.geom_traits();
-    if(gt.compare_hyperbolic_circumradius_2_object()(z[0], z[1], z[2], cosh2_eps_) == CGAL::LARGER) return true;
-    if(chew_) return shortest_edge(f) < circumradius(f) * (1 - 1e-12); // central angle < theta*(r)
-    return gt.compare_central_angle_2_object()(z[0], z[1], z[2], sin2_half_alpha_) == CGAL::SMALLER;
+    if(gt.compare_hyperbolic_circumradius_2_object()(p, q, r, cosh2_eps_) == CGAL::LARGER) return true;
+    if(chew_) return chew_shape_is_poor(p, q, r); // central angle < theta*(r): shortest edge < r
+    return gt.compare_central_angle_2_object()(p, q, r, sin2_half_alpha_) == CGAL::SMALLER;
   }
 
   /// the circumcentre of f in its chart (or the chart's origin, the barycentre, if the circle is not compact)
