@@ -377,6 +377,7 @@ private:
   std::size_t nf_ = 0, nv_ = 0, flips_ = 0;
   internal::Reference_triangulation<Geom_traits> ref_;
   std::vector<Face_index> ref_hint_; // a live face anchored at each reference face (may be stale)
+  std::vector<Edge_ref> scratch_;    // the flip stack of the insertions (reused)
 };
 
 } // namespace Hyperbolic_surface_mesh_2

@@ -245,7 +245,8 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, c
   link(f1, 0, L[1].first, L[1].second);
   link(f2, 0, L[2].first, L[2].second);
   link(f, 1, f1, 2); link(f1, 1, f2, 2); link(f2, 1, f, 2);
-  std::vector<Edge_ref> st{{f, 0}, {f1, 0}, {f2, 0}};
+  std::vector<Edge_ref>& st = scratch_; // no allocation per insertion
+  st.clear(); st.emplace_back(f, 0); st.emplace_back(f1, 0); st.emplace_back(f2, 0);
   restore_delaunay(st);
   return w;
 }
@@ -281,7 +282,8 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_on_edge(Face_index f, i
   link(g1, 1, Lad.first, Lad.second);
   link(g, 2, Ldb.first, Ldb.second);
   link(f, 0, g1, 0); link(f, 1, f1, 2); link(f1, 0, g, 0); link(g, 1, g1, 2);
-  std::vector<Edge_ref> st{{f, 2}, {f1, 1}, {g, 2}, {g1, 1}};
+  std::vector<Edge_ref>& st = scratch_;
+  st.clear(); st.emplace_back(f, 2); st.emplace_back(f1, 1); st.emplace_back(g, 2); st.emplace_back(g1, 1);
   restore_delaunay(st);
   return w;
 }

@@ -13,6 +13,7 @@
 #include <CGAL/Poincare_disk_traits_2/internal/polynomials.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -26,13 +27,16 @@ namespace internal {
 /// The quantities of a triangle (p, q, r) of Poincare coordinates that the criteria compare, for any number type
 /// of the evaluation stages (Bounded_double, Interval_nt, exact rationals): the circle coefficients (traits'
 /// `Circle_coefficients`: the circle is compact iff delta > 0, sinh^2 h = sinh2 / delta, cosh^2 h =
-/// (A - G)^2 / delta), nn = (1 - |p|^2)(1 - |q|^2)(1 - |r|^2) and a_min = sinh^2(d_min / 2) nn for the
-/// shortest edge d_min (chosen by comparisons that throw `Uncertain_conversion_exception` when undecided).
+/// (A - G)^2 / delta), nn = (1 - |p|^2)(1 - |q|^2)(1 - |r|^2) and, per edge, a[i] = sinh^2(d_i / 2) nn.
+/// Both shape tests hold for the shortest edge iff they hold for some edge (the central angle grows with the
+/// edge length on a given circle), so no shortest edge is chosen: isosceles faces (many, on symmetric
+/// surfaces) would be undecided ties.
 template <class NT>
 struct Triangle_terms
 {
   Poincare_disk_internal::Circle_coefficients<NT> cc;
-  NT delta, sinh2, nn, a_min;
+  NT delta, sinh2, nn;
+  std::array<NT, 3> a;
   Triangle_terms(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry)
     : cc(px, py, qx, qy, rx, ry), delta(cc.delta()), sinh2(cc.sinh2_numerator())
   {
@@ -40,29 +44,50 @@ struct Triangle_terms
     const NT np = lift_n(px, py), nq = lift_n(qx, qy), nr = lift_n(rx, ry);
     nn = np * nq * nr;
     // sinh^2(d/2) = |x - y|^2 / (n_x n_y): times nn, the edge pq gives |p - q|^2 n_r
-    const NT apq = squared_euclidean(px, py, qx, qy) * nr, aqr = squared_euclidean(qx, qy, rx, ry) * np,
-             arp = squared_euclidean(rx, ry, px, py) * nq;
-    if(bool(apq <= aqr) && bool(apq <= arp)) a_min = apq;
-    else a_min = bool(aqr <= arp) ? aqr : arp;
+    a = {{squared_euclidean(px, py, qx, qy) * nr, squared_euclidean(qx, qy, rx, ry) * np,
+          squared_euclidean(rx, ry, px, py) * nq}};
   }
 };
 
+/// `s[i]` are the signs of a per-edge test (POSITIVE: the edge is poor): POSITIVE if some edge is certainly
+/// poor, NEGATIVE if no edge is, else throws `Uncertain_conversion_exception` (the caller's next stage decides)
+template <class S>
+Sign any_edge_poor(const S& s0, const S& s1, const S& s2)
+{
+  if(certainly(s0 == POSITIVE) || certainly(s1 == POSITIVE) || certainly(s2 == POSITIVE)) return POSITIVE;
+  if(certainly(s0 != POSITIVE) && certainly(s1 != POSITIVE) && certainly(s2 != POSITIVE)) return NEGATIVE;
+  throw Uncertain_conversion_exception("any_edge_poor: undecided");
+}
+
 /// Chew's shape test, exact: POSITIVE iff the shortest edge d_min is shorter than the circumradius h (the
 /// central angle of the shortest edge is below theta*(h)), for a compact circumcircle (else NEGATIVE: no
-/// circumradius; the size test already calls the face poor). With cosh d_min = 1 + 2 a_min / nn:
-///   d_min < h  <=>  (2 a_min + nn)^2 / nn^2 < (A - G)^2 / delta  <=>  (A - G)^2 nn^2 - (2 a_min + nn)^2 delta > 0.
+/// circumradius; the size test already calls the face poor). With cosh d = 1 + 2 a / nn, per edge:
+///   d < h  <=>  (2 a + nn)^2 / nn^2 < (A - G)^2 / delta  <=>  (A - G)^2 nn^2 - (2 a + nn)^2 delta > 0.
+template <class NT>
+Sign chew_shape_sign(const Triangle_terms<NT>& t)
+{
+  if(!bool(sign_of(t.delta) == POSITIVE)) return NEGATIVE;
+  const NT amg = t.cc.A - t.cc.G, lhs = amg * amg * t.nn * t.nn;
+  auto edge = [&](const NT& a) { const NT w = NT(2) * a + t.nn; return sign_of(lhs - w * w * t.delta); };
+  return any_edge_poor(edge(t.a[0]), edge(t.a[1]), edge(t.a[2]));
+}
 struct Chew_shape_polynomial
 {
   template <class NT>
-  auto operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
-  {
-    const Triangle_terms<NT> t(px, py, qx, qy, rx, ry);
-    typedef decltype(sign_of(t.delta)) Result;
-    if(!bool(sign_of(t.delta) == POSITIVE)) return Result(NEGATIVE);
-    const NT amg = t.cc.A - t.cc.G, w = NT(2) * t.a_min + t.nn;
-    return Result(sign_of(amg * amg * t.nn * t.nn - w * w * t.delta));
-  }
+  Sign operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
+  { return chew_shape_sign(Triangle_terms<NT>(px, py, qx, qy, rx, ry)); }
 };
+
+/// Ruppert's shape test on the same terms: POSITIVE iff the central angle of the shortest edge is below alpha,
+/// sin^2(theta_i / 2) = a_i delta / (sinh2 nn) < sin^2(alpha / 2) for some edge (the traits'
+/// `Compare_central_angle_2` polynomial, per edge); for a compact circumcircle only.
+template <class NT>
+Sign ruppert_shape_sign(const Triangle_terms<NT>& t, const NT& sin2_half_alpha)
+{
+  const NT b = sin2_half_alpha * t.sinh2 * t.nn;
+  auto edge = [&](const NT& a) { return sign_of(b - a * t.delta); };
+  return any_edge_poor(edge(t.a[0]), edge(t.a[1]), edge(t.a[2]));
+}
 
 /// the exact Chew shape test on double coordinates: interval arithmetic, then exact rationals
 template <class Point_2>
@@ -145,9 +170,8 @@ public:
       ev.key = std::asinh(std::sqrt((std::max)(0.0, t.sinh2.v / t.delta.v)));
       // size: cosh^2 h > cosh^2 eps  <=>  sinh2 - (cosh^2 eps - 1) delta > 0 (the traits' polynomial)
       if(bool((t.sinh2 - (BD(cosh2_eps_) - BD(1)) * t.delta).sign() == POSITIVE)) { ev.bad = true; return true; }
-      if(chew_) ev.bad = bool(Chew_shape_polynomial()(px, py, qx, qy, rx, ry) == POSITIVE);
-      // Ruppert: sin^2(theta / 2) = a_min delta / (sinh2 nn) < sin^2(alpha / 2) (the traits' polynomial)
-      else ev.bad = bool((t.a_min * t.delta - BD(sin2_half_alpha_) * t.sinh2 * t.nn).sign() == NEGATIVE);
+      if(chew_) ev.bad = chew_shape_sign(t) == POSITIVE;
+      else ev.bad = ruppert_shape_sign(t, BD(sin2_half_alpha_)) == POSITIVE;
       return true;
     } catch(Uncertain_conversion_exception&) {
       return false;
