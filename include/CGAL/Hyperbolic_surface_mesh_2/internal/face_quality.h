@@ -192,39 +192,19 @@ public:
   /// the circumcentre of f in its chart (or the chart's origin, the barycentre, if the circle is not compact)
   Point_2 steiner_point(Face_index f, bool& barycentre) const
   {
-    barycentre = !is_compact(f);
-    if(barycentre) return Point_2(0, 0);
     const auto& z = t_.lift(f);
-    return t_.geom_traits().construct_hyperbolic_circumcenter_2_object()(z[0], z[1], z[2]);
+    barycentre = false;
+    try { return t_.geom_traits().construct_hyperbolic_circumcenter_2_object()(z[0], z[1], z[2]); } // checks compactness
+    catch(const Poincare_disk_domain_error&) { barycentre = true; return Point_2(0, 0); }
   }
 
-  /// faces incident to a loop edge, to an extra copy of a multiple edge, or with the vertex triple of another face
+  /// faces incident to a loop edge or to a copy of a multiple edge, or (two faces only) with the vertex triple
+  /// of the other face (see `is_simplicial_complex()`)
   std::vector<Face_index> faces_at_non_simplicial_edges() const
   {
     std::vector<Face_index> r;
-    typedef std::pair<std::pair<Vertex_index, Vertex_index>, std::array<Face_index, 2> > Edge;
-    typedef std::pair<std::array<Vertex_index, 3>, Face_index> Triple;
-    std::vector<Edge> edges;
-    std::vector<Triple> triples;
-    for(Face_index f : t_.faces()) {
-      for(int i = 0; i < 3; ++i) {
-        const Vertex_index a = t_.vertex(f, i), b = t_.vertex(f, (i + 1) % 3);
-        const Face_index g = t_.neighbor(f, i);
-        if(a == b) { r.push_back(f); continue; }
-        if(f < g || (f == g && i < t_.mirror_index(f, i)))
-          edges.push_back(Edge(std::make_pair((std::min)(a, b), (std::max)(a, b)), std::array<Face_index, 2>{{f, g}}));
-      }
-      std::array<Vertex_index, 3> tr{{t_.vertex(f, 0), t_.vertex(f, 1), t_.vertex(f, 2)}};
-      std::sort(tr.begin(), tr.end());
-      triples.push_back(Triple(tr, f));
-    }
-    std::sort(edges.begin(), edges.end());
-    for(std::size_t i = 1; i < edges.size(); ++i)
-      if(edges[i].first == edges[i - 1].first)
-        for(const Edge* e : {&edges[i], &edges[i - 1]}) { r.push_back(e->second[0]); r.push_back(e->second[1]); }
-    std::sort(triples.begin(), triples.end());
-    for(std::size_t i = 1; i < triples.size(); ++i)
-      if(triples[i].first == triples[i - 1].first) { r.push_back(triples[i].second); r.push_back(triples[i - 1].second); }
+    t_.for_each_non_simplicial_edge([&](Face_index f, int i) { r.push_back(f); r.push_back(t_.neighbor(f, i)); return true; });
+    if(r.empty() && !t_.is_simplicial_complex()) for(Face_index f : t_.faces()) r.push_back(f);
     std::sort(r.begin(), r.end());
     r.erase(std::unique(r.begin(), r.end()), r.end());
     return r;
@@ -243,8 +223,17 @@ public:
     st.maximum_circumradius = 0;
     st.minimum_angle = CGAL_PI; st.maximum_angle = 0;
     for(Face_index f : t_.faces()) {
-      st.minimum_central_angle = (std::min)(st.minimum_central_angle, central_angle(f));
-      st.maximum_circumradius = (std::max)(st.maximum_circumradius, circumradius(f));
+      // circumradius and central angle in double precision (statistics only): sinh^2 h = sinh2 / delta,
+      // sin^2(theta / 2) = a_min delta / (sinh2 nn)
+      const auto& z = t_.lift(f);
+      const Triangle_terms<double> tt(z[0].x(), z[0].y(), z[1].x(), z[1].y(), z[2].x(), z[2].y());
+      if(!(tt.delta > 0)) { st.minimum_central_angle = 0; st.maximum_circumradius = std::numeric_limits<double>::infinity(); }
+      else {
+        const double a_min = (std::min)({tt.a[0], tt.a[1], tt.a[2]});
+        st.maximum_circumradius = (std::max)(st.maximum_circumradius, std::asinh(std::sqrt(tt.sinh2 / tt.delta)));
+        const double s2 = a_min * tt.delta / (tt.nn * tt.sinh2);
+        st.minimum_central_angle = (std::min)(st.minimum_central_angle, 2 * std::asin(std::sqrt((std::min)(1.0, s2))));
+      }
       const double l[3] = {t_.edge_length(f, 0), t_.edge_length(f, 1), t_.edge_length(f, 2)};
       for(int i = 0; i < 3; ++i) {
         const double a = Hyperbolic_surface_2::corner_angle(l[(i + 1) % 3], l[i], l[(i + 2) % 3]);
