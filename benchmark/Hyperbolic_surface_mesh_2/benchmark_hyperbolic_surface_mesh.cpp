@@ -5,7 +5,9 @@
 //     Periodic_4_hyperbolic_Delaunay_triangulation_2;
 //  3. vertex counts at epsilon = 0.1, 0.05, 0.01 on genus-2 surfaces (Bolza octagon, eight.off), size only
 //     (alpha = 1e-6), alpha = 30 degrees, and Chew.
-// Usage: benchmark_hyperbolic_surface_mesh [--large]   (--large: 1e6 triangles and 1e6 points)
+// Usage: benchmark_hyperbolic_surface_mesh [--large]   (--large: 1e6 triangles and 3e5, 1e6 points)
+//        benchmark_hyperbolic_surface_mesh --refine GENUS EPSILON   (our Chew refinement only, for profilers)
+//        benchmark_hyperbolic_surface_mesh --insert N               (the Bolza insertion comparison only)
 // Output: one "key value ..." line per measurement.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -22,7 +24,9 @@
 #include <CGAL/Hyperbolic_surface_mesh_2/conformal_remesh.h>
 
 #include <chrono>
+#include <ctime>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -33,9 +37,13 @@ namespace HSM = CGAL::Hyperbolic_surface_mesh_2;
 namespace HSMP = CGAL::Hyperbolic_surface_mesh_2::parameters;
 typedef HSM::Delaunay_triangulation_on_surface<> DT;
 
+// CPU time of the process (both sides of every ratio are measured the same way; wall-clock time on a machine
+// shared with other builds mostly measured the other processes)
 static double now()
 {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // CGAL Mesh_2 on the unit square with a size bound chosen for about n triangles (shape bound 0.125)
@@ -60,12 +68,14 @@ static void mesh2_reference(double n_target, std::size_t& faces, double& seconds
 static void throughput(int genus, double eps)
 {
   DT t(HSM::Fundamental_polygon<K>::regular(genus));
+  const double t0 = now();
   const auto st = HSM::refine_Chew(t, HSMP::maximum_circumradius(eps));
+  const double seconds = now() - t0;
   std::size_t mf = 0; double ms = 0;
   mesh2_reference(double(st.final_faces), mf, ms);
-  const double ours = double(st.final_faces) / st.seconds, ref = double(mf) / ms;
+  const double ours = double(st.final_faces) / seconds, ref = double(mf) / ms;
   std::cout << "refinement_throughput genus " << genus << " epsilon " << eps << " faces " << st.final_faces
-            << " seconds " << st.seconds << " triangles_per_s " << ours << " mesh2_faces " << mf << " mesh2_seconds " << ms
+            << " cpu_seconds " << seconds << " wall_seconds " << st.seconds << " triangles_per_s " << ours << " mesh2_faces " << mf << " mesh2_seconds " << ms
             << " mesh2_triangles_per_s " << ref << " ratio " << ours / ref << " status " << HSM::to_string(st.status) << std::endl;
 }
 
@@ -111,25 +121,37 @@ static void counts(const char* name, DT t0)
     struct Run { const char* what; bool chew; double alpha; };
     for(const Run& r : {Run{"size_only", false, 1e-6}, Run{"ruppert_alpha30", false, 30 * CGAL_PI / 180}, Run{"chew", true, 0.5}}) {
       DT t = t0;
+      const double c0 = now();
       const auto st = r.chew ? HSM::refine_Chew(t, HSMP::maximum_circumradius(eps))
                              : HSM::refine_Ruppert(t, HSMP::maximum_circumradius(eps, HSMP::minimum_central_angle(r.alpha)));
       std::cout << "vertex_count surface " << name << " epsilon " << eps << " criterion " << r.what << " vertices "
                 << st.final_vertices << " min_central_angle_deg " << st.minimum_central_angle * 180 / CGAL_PI
-                << " min_angle_deg " << st.minimum_angle * 180 / CGAL_PI << " seconds " << st.seconds << std::endl;
+                << " min_angle_deg " << st.minimum_angle * 180 / CGAL_PI << " cpu_seconds " << now() - c0 << std::endl;
     }
   }
 }
 
 int main(int argc, char** argv)
 {
+  if(argc > 3 && std::strcmp(argv[1], "--refine") == 0) {
+    DT t(HSM::Fundamental_polygon<K>::regular(std::atoi(argv[2])));
+    const double t0 = now();
+    const auto st = HSM::refine_Chew(t, HSMP::maximum_circumradius(std::atof(argv[3])));
+    const double seconds = now() - t0;
+    std::cout << "refine faces " << st.final_faces << " cpu_seconds " << seconds << " triangles_per_s "
+              << double(st.final_faces) / seconds << " status " << HSM::to_string(st.status) << std::endl;
+    return 0;
+  }
+  if(argc > 2 && std::strcmp(argv[1], "--insert") == 0) { bolza_insertion(std::size_t(std::atof(argv[2]))); return 0; }
   const bool large = argc > 1 && std::strcmp(argv[1], "--large") == 0;
   // 1. throughput
   for(double eps : {0.02, 0.01}) throughput(2, eps);
   for(double eps : {0.02, 0.0125}) throughput(4, eps);
   if(large) { throughput(2, 0.004); throughput(4, 0.007); }
   // 2. Bolza insertion
-  for(std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(100000)}) bolza_insertion(n);
-  if(large) bolza_insertion(1000000);
+  // n random points of a square, of which about 69.5% fall in the octagon (the accepted points are inserted)
+  for(std::size_t n : {std::size_t(1000), std::size_t(10000), std::size_t(144000)}) bolza_insertion(n);
+  if(large) { bolza_insertion(432000); bolza_insertion(1440000); }
   // 3. vertex counts, Chew versus Ruppert
   counts("bolza", DT(HSM::Fundamental_polygon<K>::Bolza()));
   typedef CGAL::Surface_mesh<K::Point_3> Mesh;

@@ -99,7 +99,13 @@ public:
   /// The triangulation of the surface glued from `polygon`: its vertex cycles are the vertices (one for a
   /// regular 4g-gon), the polygon is cut into a fan of triangles from its first vertex, then made Delaunay by
   /// flips. The frame of the reference triangulation is the polygon's (`insert_in_frame()`). Cost: O(n).
-  explicit Delaunay_triangulation_on_surface(const Fundamental_polygon<Kernel>& polygon) { build_from_polygon(polygon); }
+  explicit Delaunay_triangulation_on_surface(const Fundamental_polygon<Kernel>& polygon) { build_from_polygon(polygon, false); }
+  /// The same, with the sides of the polygon as constrained edges (`sides_as_constraints`): on the surface they
+  /// form closed geodesic loops (the paired sides glued); the triangulation is then Delaunay away from them
+  /// (constrained Delaunay), flips never remove them, insertions on them split them into constrained halves,
+  /// and the refinement splits them at midpoints when encroached, so that the polygon stays a union of faces.
+  Delaunay_triangulation_on_surface(const Fundamental_polygon<Kernel>& polygon, bool sides_as_constraints)
+  { build_from_polygon(polygon, sides_as_constraints); }
 
   /// The triangulation of `st` (a `Hyperbolic_surface_2::Hyperbolic_surface_triangulation`): one face per face of
   /// `st.mesh()` (in the order of `faces(st.mesh())`, with `z[i]` the source of the i-th halfedge from
@@ -137,21 +143,26 @@ public:
   /// a face incident to `v` and the corner of `v` in it
   std::pair<Face_index, int> incident_face(Vertex_index v) const { return {vertices_[v].face, vertices_[v].corner}; }
 
-  /// the isometry from the chart of `f` to the chart of `neighbor(f, i)` (lift of edge i onto its other lift)
-  Isometry_2 transition(Face_index f, int i) const
+  /// true if edge i of f is constrained (a piece of a feature loop)
+  bool is_constrained(Face_index f, int i) const { return (faces_[f].cons >> i) & 1u; }
+  /// number of constrained edges
+  std::size_t number_of_constrained_edges() const
   {
-    const Face& F = faces_[f];
-    const Face& G = faces_[F.nb[i]];
-    const int j = F.ne[i];
-    return Geometry::isometry_from_pairs(F.z[i], F.z[(i + 1) % 3], G.z[(j + 1) % 3], G.z[j]);
+    std::size_t n = 0;
+    for(Face_index f = 0; f < faces_.size(); ++f)
+      if(faces_[f].alive) for(int i = 0; i < 3; ++i) if(is_constrained(f, i)) ++n;
+    return n / 2;
   }
+  /// the isometry from the chart of `f` to the chart of `neighbor(f, i)` (lift of edge i onto its other lift).
+  /// Cached per edge (computed once from the two charts, the reverse transition stored as its inverse, so the two
+  /// sides of an edge agree exactly); the cache of an edge is dropped whenever a face on it is rebuilt or
+  /// relinked. The cache makes the const accessors non-reentrant: do not share one triangulation between threads.
+  Isometry_2 transition(Face_index f, int i) const { return cached_transition(f, i); }
   /// the apex of `neighbor(f, i)` (its corner off edge i) in the chart of `f`
   Point_2 neighbor_apex(Face_index f, int i) const
   {
-    const Face& F = faces_[f];
-    const Face& G = faces_[F.nb[i]];
-    const int j = F.ne[i];
-    return Geometry::isometry_from_pairs(G.z[(j + 1) % 3], G.z[j], F.z[i], F.z[(i + 1) % 3]).apply_unchecked(G.z[(j + 2) % 3]);
+    const Face& G = faces_[faces_[f].nb[i]];
+    return cached_transition(f, i).inverse().apply_unchecked(G.z[(faces_[f].ne[i] + 2) % 3]);
   }
   /// hyperbolic length of edge i of f (from its chart)
   double edge_length(Face_index f, int i) const { return Geometry::distance(faces_[f].z[i], faces_[f].z[(i + 1) % 3]); }
@@ -168,13 +179,13 @@ public:
   std::size_t number_of_flips() const { return flips_; }
 
   // ---------------------------------------------------------------- predicates
-  /// true if edge i of f is locally Delaunay: the apex of the neighbour is not strictly inside the
+  /// true if edge i of f is constrained or locally Delaunay: the apex of the neighbour is not strictly inside the
   /// circumcircle of the face (exact, in the chart of the face with the smaller index). An edge whose two
   /// sides are the same face counts as Delaunay (it cannot be flipped).
   bool is_locally_delaunay(Face_index f, int i) const
   {
     const Face_index g = faces_[f].nb[i];
-    if(g == f) return true;
+    if(g == f || is_constrained(f, i)) return true; // constrained edges count as Delaunay (never flipped)
     const int j = faces_[f].ne[i];
     const Face_index a = f < g ? f : g;
     const int k = f < g ? i : j;
@@ -190,29 +201,46 @@ public:
         for(int i = 0; i < 3; ++i) if(!is_locally_delaunay(f, i)) return false;
     return true;
   }
-  /// true if there is no loop edge, no multiple edge and no two faces with the same three vertices
+  /// true if there is no loop edge, no multiple edge and no two faces with the same three vertices. Linear:
+  /// the edges from each vertex are marked around its star (no sort). Without loops and multiple edges two
+  /// faces on the same three vertices would share their three edges and form a closed sphere on their own,
+  /// which a connected surface of genus >= 2 is not, so that case is only tested for two faces.
   bool is_simplicial_complex() const
   {
-    std::vector<std::pair<Vertex_index, Vertex_index> > edges;
-    std::vector<std::array<Vertex_index, 3> > triples;
-    edges.reserve(3 * nf_ / 2); triples.reserve(nf_);
-    for(Face_index f = 0; f < faces_.size(); ++f) {
-      if(!faces_[f].alive) continue;
-      const auto& v = faces_[f].v;
-      for(int i = 0; i < 3; ++i) {
-        const Vertex_index a = v[i], b = v[(i + 1) % 3];
-        if(a == b) return false;
-        const Face_index g = faces_[f].nb[i];
-        if(f < g || (f == g && i < faces_[f].ne[i])) edges.emplace_back((std::min)(a, b), (std::max)(a, b));
-      }
-      std::array<Vertex_index, 3> t = v;
-      std::sort(t.begin(), t.end());
-      triples.push_back(t);
+    bool ok = true;
+    for_each_non_simplicial_edge([&](Face_index, int) { ok = false; return false; });
+    if(!ok) return false;
+    if(nf_ == 2) {
+      std::array<Vertex_index, 3> t[2];
+      int k = 0;
+      for(Face_index f = 0; f < faces_.size(); ++f) if(faces_[f].alive) { t[k] = faces_[f].v; std::sort(t[k].begin(), t[k].end()); ++k; }
+      return t[0] != t[1];
     }
-    std::sort(edges.begin(), edges.end());
-    std::sort(triples.begin(), triples.end());
-    return std::adjacent_find(edges.begin(), edges.end()) == edges.end() &&
-           std::adjacent_find(triples.begin(), triples.end()) == triples.end();
+    return true;
+  }
+  /// Calls `fn(f, i)` for every loop edge (from both of its sides) and for every copy of a multiple edge (the
+  /// first copy again with each later one), until `fn` returns false. Linear (marks around each vertex's star).
+  template <class Function>
+  void for_each_non_simplicial_edge(const Function& fn) const
+  {
+    std::vector<Vertex_index> mark(vertices_.size(), null_index);
+    std::vector<Edge_ref> first_edge(vertices_.size());
+    for(Vertex_index v = 0; v < vertices_.size(); ++v) {
+      if(!vertices_[v].alive) continue;
+      Edge_ref c(vertices_[v].face, vertices_[v].corner);
+      const Edge_ref first = c;
+      std::size_t guard = 0;
+      do {
+        const Face& F = faces_[c.first];
+        const Vertex_index u = F.v[(c.second + 1) % 3]; // edge c.second: v -> u
+        if(u == v) { if(!fn(c.first, c.second)) return; }
+        else if(mark[u] == v) { if(!fn(first_edge[u].first, first_edge[u].second) || !fn(c.first, c.second)) return; }
+        else { mark[u] = v; first_edge[u] = c; }
+        const int e = (c.second + 2) % 3;
+        c = Edge_ref(F.nb[e], F.ne[e]);
+        if(++guard > 3 * nf_ + 3) throw Numerical_error("Delaunay_triangulation_on_surface: broken adjacency");
+      } while(c != first);
+    }
   }
   /// number of loop edges plus number of extra copies of multiple edges
   std::size_t number_of_non_simplicial_edges() const;
@@ -234,7 +262,9 @@ public:
   /// supporting geodesic separates the face from the point (exact Klein orientation in the current chart) and
   /// mapping `p` by the transitions. Throws `Poincare_disk_domain_error` if `p` is not in the open disk and
   /// `Numerical_error` if the walk exceeds its work bound (10 F + 1000 steps). Cost: the number of faces crossed.
-  Location locate(const Point_2& p, Face_index start) const;
+  /// With `blocking` non-null, the walk stops before crossing a constrained edge and stores it there (else
+  /// `blocking->first` is `null_index`): the point is then not visible from `start` inside the feature loops.
+  Location locate(const Point_2& p, Face_index start, std::pair<Face_index, int>* blocking = nullptr) const;
   /// Locates a point given in the frame of the reference triangulation (the polygon's frame; for a mesh
   /// input, the frame of its development): walks in the reference triangulation, then in this one.
   Location locate_in_frame(const Point_2& p) const;
@@ -277,7 +307,7 @@ public:
   /// vertex, or a star that wraps onto itself: too few vertices around `v`).
   bool remove(Vertex_index v);
 
-  /// Flips edge i of f if the flip is valid (two distinct faces, strictly convex lifted quadrilateral).
+  /// Flips edge i of f if the flip is valid (not constrained, two distinct faces, strictly convex lifted quadrilateral).
   /// Returns false otherwise. The two faces keep their indices: f gets corners (apex, source, neighbour apex),
   /// the neighbour gets (neighbour apex, target, apex). The triangulation may stop being Delaunay.
   bool flip(Face_index f, int i);
@@ -307,6 +337,9 @@ private:
     Isometry_2 to_ref;
     std::size_t version = 0;
     bool alive = true;
+    mutable std::array<Isometry_2, 3> tr; // transition cache (see transition()); bit i of tr_ok: tr[i] valid
+    mutable unsigned char tr_ok = 0;
+    unsigned char cons = 0;               // bit i: edge i is constrained
   };
   struct Vertex
   {
@@ -319,7 +352,9 @@ private:
 
   Delaunay_triangulation_on_surface() {}
 
-  void build_from_polygon(const Fundamental_polygon<Kernel>& P);
+  void build_from_polygon(const Fundamental_polygon<Kernel>& P, bool constrain_sides);
+  void set_constrained(Face_index f, int i, bool c)
+  { if(c) faces_[f].cons |= (unsigned char)(1u << i); else faces_[f].cons &= (unsigned char)~(1u << i); }
   template <class ST> void build_from_surface(const ST& st);
   void finish_construction();
 
@@ -340,8 +375,20 @@ private:
 
   void link(Face_index a, int i, Face_index b, int j)
   {
-    faces_[a].nb[i] = b; faces_[a].ne[i] = (unsigned char)j;
-    faces_[b].nb[j] = a; faces_[b].ne[j] = (unsigned char)i;
+    faces_[a].nb[i] = b; faces_[a].ne[i] = (unsigned char)j; faces_[a].tr_ok &= (unsigned char)~(1u << i);
+    faces_[b].nb[j] = a; faces_[b].ne[j] = (unsigned char)i; faces_[b].tr_ok &= (unsigned char)~(1u << j);
+  }
+  const Isometry_2& cached_transition(Face_index f, int i) const
+  {
+    const Face& F = faces_[f];
+    if(!((F.tr_ok >> i) & 1u)) {
+      const Face& G = faces_[F.nb[i]];
+      const int j = F.ne[i];
+      F.tr[i] = Geometry::isometry_from_pairs(F.z[i], F.z[(i + 1) % 3], G.z[(j + 1) % 3], G.z[j]);
+      F.tr_ok |= (unsigned char)(1u << i);
+      if(&G != &F || j != i) { G.tr[j] = F.tr[i].inverse(); G.tr_ok |= (unsigned char)(1u << j); }
+    }
+    return F.tr[i];
   }
   /// sets face f to the triangle (a, b, c) of a common chart whose anchor is (ref, chart_to_ref); recentres it
   void set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
@@ -360,6 +407,7 @@ private:
   Vertex_index insert_on_edge(Face_index f, int i, const Point_2& p);
   bool merge_star_of_degree_3(Vertex_index v, const std::vector<Edge_ref>& st);
   bool quad_is_convex(Face_index f, int i) const;
+  bool near_corner(const Face& F, int i, const Point_2& p) const;
 
   Geom_traits gt_;
   std::vector<Face> faces_;
@@ -368,6 +416,7 @@ private:
   std::size_t nf_ = 0, nv_ = 0, flips_ = 0;
   internal::Reference_triangulation<Geom_traits> ref_;
   std::vector<Face_index> ref_hint_; // a live face anchored at each reference face (may be stale)
+  std::vector<Edge_ref> scratch_;    // the flip stack of the insertions (reused)
 };
 
 } // namespace Hyperbolic_surface_mesh_2

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Delaunay refinement on a closed hyperbolic surface: the generalized Ruppert and Chew criteria of the thesis
-// (chapter 3) without input segments, circumcentres located by walking across the transitions, largest
-// circumradius first, then refinement until the triangulation is a simplicial complex.
+// (chapter 3), circumcentres located by walking across the transitions, largest circumradius first, constrained
+// edges (feature loops) split at midpoints when encroached, then refinement until the triangulation is a
+// simplicial complex.
 #ifndef CGAL_HYPERBOLIC_SURFACE_MESH_2_REFINE_SURFACE_MESH_H
 #define CGAL_HYPERBOLIC_SURFACE_MESH_2_REFINE_SURFACE_MESH_H
 
@@ -84,6 +85,7 @@ struct Refinement_statistics
   std::size_t circumcenters_inserted = 0;   ///< Steiner points for the criteria
   std::size_t simplicial_insertions = 0;    ///< Steiner points inserted to remove loops and multiple edges
   std::size_t barycenters_inserted = 0;     ///< faces with a non-compact circumcircle got their barycentre
+  std::size_t segment_splits = 0;           ///< midpoints of encroached or blocking constrained edges
   std::size_t unrefinable_faces = 0;        ///< a Steiner point that could not be inserted (rounding)
   std::size_t faces_failing_criteria = 0;   ///< poor faces left at the end (0 unless the status says otherwise)
   std::size_t flips = 0;
@@ -104,7 +106,7 @@ struct Refinement_statistics
     return os << (s.chew ? "Chew" : "Ruppert") << " status=" << to_string(s.status) << " epsilon=" << s.epsilon
               << (s.chew ? "" : " alpha_deg=" + std::to_string(s.alpha * deg)) << " vertices=" << s.initial_vertices
               << "->" << s.final_vertices << " faces=" << s.final_faces << " circumcenters=" << s.circumcenters_inserted
-              << " simplicial_insertions=" << s.simplicial_insertions << " barycenters=" << s.barycenters_inserted
+              << " simplicial_insertions=" << s.simplicial_insertions << " segment_splits=" << s.segment_splits << " barycenters=" << s.barycenters_inserted
               << " unrefinable=" << s.unrefinable_faces << " failing=" << s.faces_failing_criteria << " flips=" << s.flips
               << " simplicial=" << s.simplicial_complex << " chi=" << s.euler_characteristic << " genus=" << s.genus
               << " min_central_angle_deg=" << s.minimum_central_angle * deg << " max_circumradius=" << s.maximum_circumradius
@@ -129,15 +131,22 @@ public:
                   const std::function<bool(const Refinement_progress&)>& cb, bool verbose)
     : t_(t), q_(q), max_(max_ins), cb_(cb), verbose_(verbose) {}
 
-  /// refines until no face is bad; returns the status
+  /// refines until no face is bad and no constrained edge is encroached; returns the status
   Refinement_status run(Refinement_statistics& st)
   {
-    for(Face_index f : t_.faces()) push(f);
-    while(!queue_.empty()) {
+    for(Face_index f : t_.faces()) {
+      push(f);
+      for(int i = 0; i < 3; ++i)
+        if(t_.is_constrained(f, i)) { segments_.push_back(Segment{f, i, t_.version(f)}); has_constraints_ = true; }
+    }
+    for(;;) {
+      const Refinement_status s = split_encroached_segments(st);
+      if(s != Refinement_status::SUCCESS) return s;
+      if(queue_.empty()) break;
       const Entry e = queue_.top(); queue_.pop();
       if(!t_.is_face(e.f) || t_.version(e.f) != e.version) continue;
-      const Refinement_status s = step(e, st);
-      if(s != Refinement_status::SUCCESS) return s;
+      const Refinement_status s2 = step(e, st);
+      if(s2 != Refinement_status::SUCCESS) return s2;
     }
     return Refinement_status::SUCCESS;
   }
@@ -154,33 +163,150 @@ public:
         const Refinement_status s = step(e, st, true);
         if(s != Refinement_status::SUCCESS) return s;
       }
-      run(st); // the new faces may be poor
+      const Refinement_status s = run(st); // the new faces may be poor, the new vertices may encroach
+      if(s != Refinement_status::SUCCESS) return s;
     }
     return Refinement_status::WORK_BOUND_REACHED;
   }
 
 private:
+  struct Segment { Face_index f; int i; std::size_t version; };
+
   void push(Face_index f)
   {
-    if(q_.is_bad(f)) queue_.push(Entry{q_.circumradius(f), f, t_.version(f)});
+    const auto ev = q_.evaluate(f);
+    if(ev.bad) queue_.push(Entry{ev.key, f, t_.version(f)});
   }
+
+  /// a constrained edge with a vertex strictly inside its hyperbolic diametral disk (the apex of either face)
+  bool encroached(Face_index f, int i) const
+  {
+    const auto& z = t_.lift(f);
+    const auto side = t_.geom_traits().side_of_hyperbolic_diametral_circle_2_object();
+    const Point_2 &a = z[i], &b = z[(i + 1) % 3];
+    return side(a, b, z[(i + 2) % 3]) == CGAL::ON_BOUNDED_SIDE || side(a, b, t_.neighbor_apex(f, i)) == CGAL::ON_BOUNDED_SIDE;
+  }
+
+  Refinement_status split_encroached_segments(Refinement_statistics& st)
+  {
+    while(!segments_.empty()) {
+      const Segment s = segments_.back(); segments_.pop_back();
+      if(!t_.is_face(s.f) || t_.version(s.f) != s.version || !t_.is_constrained(s.f, s.i) || !encroached(s.f, s.i)) continue;
+      const Refinement_status r = split(s.f, s.i, st);
+      if(r != Refinement_status::SUCCESS) return r;
+    }
+    return Refinement_status::SUCCESS;
+  }
+
+  /// a vertex where more than two constrained edges meet (a corner of the feature loops)
+  bool is_corner(typename DT::Vertex_index v) const
+  {
+    std::size_t n = 0;
+    for(const auto& c : t_.star(v)) if(t_.is_constrained(c.first, c.second)) ++n;
+    return n > 2;
+  }
+
+  /// Splits constrained edge i of f (both halves stay constrained): at its hyperbolic midpoint, or, for an edge
+  /// from a corner to a non-corner, at the power of two closest to half its length from the corner (Ruppert's
+  /// concentric shells, as in the plane: the edges at a corner get equal lengths, so the refinement does not
+  /// cascade towards a small corner angle)
+  Refinement_status split(Face_index f, int i, Refinement_statistics& st)
+  {
+    const auto& z = t_.lift(f);
+    const int j = (i + 1) % 3;
+    const bool ca = is_corner(t_.vertex(f, i)), cb = is_corner(t_.vertex(f, j));
+    typename DT::Location loc;
+    loc.type = DT::Location::ON_EDGE; loc.face = f; loc.index = i;
+    if(ca != cb) {
+      const double len = t_.edge_length(f, i), d = std::exp2(std::round(std::log2(len / 2)));
+      loc.point = ca ? DT::Geometry::point_along(z[i], z[j], d) : DT::Geometry::point_along(z[j], z[i], d);
+    } else {
+      loc.point = t_.geom_traits().construct_hyperbolic_midpoint_2_object()(z[i], z[j]);
+    }
+    return inserted(loc, st, Kind::SEGMENT, 0);
+  }
+
+  enum class Kind { CIRCUMCENTER, BARYCENTER, SIMPLICIAL, SEGMENT };
 
   Refinement_status step(const Entry& e, Refinement_statistics& st, bool simplicial = false)
   {
     if(inserted_ >= max_) return Refinement_status::WORK_BOUND_REACHED;
     bool barycentre = false;
     const Point_2 c = q_.steiner_point(e.f, barycentre);
+    typename DT::Location loc;
+    std::pair<Face_index, int> blocking;
+    try { loc = t_.locate(c, e.f, &blocking); }
+    catch(const Poincare_disk_domain_error&) { ++st.unrefinable_faces; return Refinement_status::SUCCESS; }
+    // not visible inside the feature loops: split the constrained edge in the way instead
+    if(blocking.first != DT::null_index) {
+      const Refinement_status s = split(blocking.first, blocking.second, st);
+      if(t_.is_face(e.f) && t_.version(e.f) == e.version) push(e.f); // untouched by the split: still poor
+      return s;
+    }
+    // Ruppert: a Steiner point that would encroach a constrained edge is not inserted; the edge is split instead
+    std::pair<Face_index, int> enc;
+    if(has_constraints_ && encroaches_segment(loc, enc)) {
+      const Refinement_status s = split(enc.first, enc.second, st);
+      if(t_.is_face(e.f) && t_.version(e.f) == e.version) push(e.f);
+      return s;
+    }
+    return inserted(loc, st, simplicial ? Kind::SIMPLICIAL : (barycentre ? Kind::BARYCENTER : Kind::CIRCUMCENTER), e.key);
+  }
+
+  /// true (and the edge in `enc`) if the located point lies strictly inside the diametral disk of a constrained
+  /// edge on the boundary of its cavity (the faces whose circumcircle contains it, not crossing constraints):
+  /// in a constrained Delaunay triangulation the edges it encroaches are there (work bound: 256 faces)
+  bool encroaches_segment(const typename DT::Location& loc, std::pair<Face_index, int>& enc) const
+  {
+    const auto& gt = t_.geom_traits();
+    const auto side = gt.side_of_hyperbolic_diametral_circle_2_object();
+    const auto incircle = gt.side_of_oriented_circle_2_object();
+    cavity_.clear();
+    cavity_.push_back(std::make_pair(loc.face, loc.point));
+    for(std::size_t k = 0; k < cavity_.size() && k < 256; ++k) {
+      const Face_index f = cavity_[k].first;
+      const Point_2 c = cavity_[k].second;
+      const auto& z = t_.lift(f);
+      for(int i = 0; i < 3; ++i) {
+        if(t_.is_constrained(f, i)) {
+          if(side(z[i], z[(i + 1) % 3], c) == CGAL::ON_BOUNDED_SIDE) { enc = std::make_pair(f, i); return true; }
+          continue;
+        }
+        const Face_index g = t_.neighbor(f, i);
+        bool seen = false;
+        for(const auto& x : cavity_) if(x.first == g) { seen = true; break; }
+        if(seen) continue;
+        const Point_2 cg = t_.transition(f, i).apply_unchecked(c);
+        const auto& w = t_.lift(g);
+        if(incircle(w[0], w[1], w[2], cg) == CGAL::ON_POSITIVE_SIDE) cavity_.push_back(std::make_pair(g, cg));
+      }
+    }
+    return false;
+  }
+
+  Refinement_status inserted(const typename DT::Location& loc, Refinement_statistics& st, Kind kind, double key)
+  {
+    if(inserted_ >= max_) return Refinement_status::WORK_BOUND_REACHED;
     const std::size_t nv = t_.number_of_vertices();
-    typename DT::Vertex_index w = DT::null_index;
-    try { w = t_.insert(c, e.f); } catch(const Poincare_disk_domain_error&) { w = DT::null_index; }
+    const typename DT::Vertex_index w = t_.insert(loc);
     if(w == DT::null_index || t_.number_of_vertices() == nv) { ++st.unrefinable_faces; return Refinement_status::SUCCESS; }
     ++inserted_;
-    if(simplicial) ++st.simplicial_insertions; else if(barycentre) ++st.barycenters_inserted; else ++st.circumcenters_inserted;
-    for(const auto& corner : t_.star(w)) push(corner.first);
+    switch(kind) {
+    case Kind::SIMPLICIAL: ++st.simplicial_insertions; break;
+    case Kind::BARYCENTER: ++st.barycenters_inserted; break;
+    case Kind::SEGMENT: ++st.segment_splits; break;
+    default: ++st.circumcenters_inserted;
+    }
+    for(const auto& corner : t_.star(w)) {
+      push(corner.first);
+      // the constrained edges around w (opposite w, and the halves at w) may be encroached now
+      for(int i = 0; i < 3; ++i)
+        if(t_.is_constrained(corner.first, i)) segments_.push_back(Segment{corner.first, i, t_.version(corner.first)});
+    }
     if(inserted_ % 4096 == 0) {
       Refinement_progress p;
       p.insertions = inserted_; p.number_of_vertices = t_.number_of_vertices(); p.queued_faces = queue_.size();
-      p.current_circumradius = e.key;
+      p.current_circumradius = key;
       if(verbose_) std::cerr << "  refinement: " << p.insertions << " insertions, " << p.number_of_vertices
                              << " vertices, circumradius " << p.current_circumradius << std::endl;
       if(cb_ && !cb_(p)) return Refinement_status::CANCELLED;
@@ -194,6 +320,9 @@ private:
   std::function<bool(const Refinement_progress&)> cb_;
   bool verbose_;
   std::priority_queue<Entry> queue_;
+  std::vector<Segment> segments_; // constrained edges to test for encroachment (stale entries skipped)
+  bool has_constraints_ = false;
+  mutable std::vector<std::pair<Face_index, Point_2> > cavity_;
 };
 
 template <class DT, class NamedParameters>
@@ -251,7 +380,9 @@ Refinement_statistics refine(DT& t, bool chew, const NamedParameters& np)
   exact predicates `Compare_hyperbolic_circumradius_2`, `Compare_central_angle_2` in the face's chart), insert
   its circumcentre, located by walking from the face across the transitions; faces are refined largest
   circumradius first. Then (option `make_simplicial`) faces at loops and multiple edges are refined until the
-  triangulation is a simplicial complex.
+  triangulation is a simplicial complex. Constrained edges (feature loops, see
+  `Delaunay_triangulation_on_surface(polygon, true)`) are split at their hyperbolic midpoint when a vertex lies
+  strictly inside their diametral disk, or when they block the walk to a circumcentre (which is then not inserted).
 
   Named parameters: `parameters::maximum_circumradius(epsilon)` (required), `parameters::minimum_central_angle(alpha)`,
   `parameters::maximum_number_of_insertions(n)`, `parameters::make_simplicial(b)`, and CGAL's
@@ -270,7 +401,8 @@ Refinement_statistics refine_Ruppert(DT& t, const NamedParameters& np = CGAL::pa
   \ingroup PkgHyperbolicSurfaceMesh2Ref
   Generalized Chew refinement on the surface (thesis Algorithm 5, without input segments): a face is poor if its
   circumradius r exceeds epsilon (exact predicate) or the central angle of its shortest edge is below theta*(r),
-  i.e. its shortest edge is shorter than r (decided in double precision with a relative margin of 1e-12).
+  i.e. its shortest edge is shorter than r (exact: the sign of a polynomial in the chart's coordinates,
+  `internal::Chew_shape_polynomial`, filtered, with an exact rational fallback).
   Termination is guaranteed for h* = epsilon < 2.3101 (thesis Theorem 3.1); the statistics report it. The rest
   as `refine_Ruppert()` (alpha is ignored).
 */

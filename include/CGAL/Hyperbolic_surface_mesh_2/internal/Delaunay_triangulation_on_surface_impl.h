@@ -27,9 +27,11 @@ void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, co
                             const Isometry_2& chart_to_ref)
 {
   Face& F = faces_[f];
-  const Isometry_2 t = Isometry_2::translation_to_origin(Geometry::barycenter(a, b, c));
+  const Point_2 o = Geometry::barycenter(a, b, c); // in the disk: a barycentre of points of the disk
+  const Isometry_2 t(1, 0, -o.x(), -o.y());          // translation_to_origin(o) without its disk check
   F.z = {{t.apply_unchecked(a), t.apply_unchecked(b), t.apply_unchecked(c)}};
   F.v = {{va, vb, vc}};
+  F.tr_ok = 0; // the callers relink all three edges (which drops the neighbours' cached transitions too)
   F.ref = ref;
   F.to_ref = (chart_to_ref * t.inverse()).normalized();
   // keep the anchor near: walk the barycentre (the chart's origin) in the reference triangulation
@@ -41,7 +43,7 @@ void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, co
 }
 
 template <class Traits_>
-void CGAL_HSM2_DT::build_from_polygon(const Fundamental_polygon<Kernel>& P)
+void CGAL_HSM2_DT::build_from_polygon(const Fundamental_polygon<Kernel>& P, bool constrain_sides)
 {
   const std::size_t n = P.size();
   for(int k = 0; k < P.number_of_vertex_cycles(); ++k) new_vertex();
@@ -72,8 +74,10 @@ void CGAL_HSM2_DT::build_from_polygon(const Fundamental_polygon<Kernel>& P)
   for(std::size_t s = 0; s < n; ++s) {
     const std::size_t s2 = std::size_t(P.paired_side(s));
     if(s < s2) { const Edge_ref a = side(s), b = side(s2); link(a.first, a.second, b.first, b.second); }
+    if(constrain_sides) set_constrained(side(s).first, side(s).second, true);
   }
   for(std::size_t t = 0; t + 2 < n; ++t) { ref_.faces[t].nb = faces_[t].nb; ref_.faces[t].ne = faces_[t].ne; }
+  ref_.cache_transitions();
   finish_construction();
 }
 
@@ -108,6 +112,7 @@ void CGAL_HSM2_DT::build_from_surface(const ST& st)
     ref_hint_[f] = f;
     ref_.faces[f].z = F.z; ref_.faces[f].nb = F.nb; ref_.faces[f].ne = F.ne;
   }
+  ref_.cache_transitions();
   // frames: development along a breadth-first spanning tree of the faces
   std::vector<char> seen(charts.size(), 0);
   std::deque<Face_index> queue(1, 0);
@@ -139,8 +144,9 @@ void CGAL_HSM2_DT::finish_construction()
 // ---------------------------------------------------------------- location
 
 template <class Traits_>
-typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start) const
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start, Edge_ref* blocking) const
 {
+  if(blocking) *blocking = Edge_ref(null_index, -1);
   internal::check_in_disk(p0, "Delaunay_triangulation_on_surface::locate");
   if(!is_face(start)) throw Invalid_input_error("Delaunay_triangulation_on_surface::locate: not a face");
   const auto orient = gt_.orientation_2_object();
@@ -158,6 +164,7 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
       const CGAL::Orientation o = orient(F.z[i], F.z[(i + 1) % 3], p);
       if(o == CGAL::RIGHT_TURN) { cross = i; break; }
     }
+    if(cross >= 0 && blocking && is_constrained(f, cross)) { *blocking = Edge_ref(f, cross); r.face = f; r.point = p; return r; }
     if(cross >= 0) {
       p = transition(f, cross).apply_unchecked(p);
       came_from = F.ne[cross];
@@ -171,12 +178,12 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
       if(o == CGAL::RIGHT_TURN && i != came_from) { cross = i; break; }
       if(o != CGAL::LEFT_TURN) { ++zeros; zero_edge = i; }
     }
+    if(cross >= 0 && blocking && is_constrained(f, cross)) { *blocking = Edge_ref(f, cross); r.face = f; r.point = p; return r; }
     if(cross >= 0) { p = transition(f, cross).apply_unchecked(p); came_from = F.ne[cross]; f = F.nb[cross]; continue; }
     r.face = f; r.point = p;
     // a lift of a vertex, up to the rounding of the transitions crossed (relative to the face's size)
-    const double tol = duplicate_distance * (std::min)({edge_length(f, 0), edge_length(f, 1), edge_length(f, 2)});
     for(int i = 0; i < 3; ++i)
-      if(F.z[i] == p || Geometry::distance(F.z[i], p) < tol) { r.type = Location::ON_VERTEX; r.index = i; return r; }
+      if(F.z[i] == p || near_corner(F, i, p)) { r.type = Location::ON_VERTEX; r.index = i; return r; }
     if(zeros == 0) { r.type = Location::IN_FACE; return r; }
     if(zeros == 1) { r.type = Location::ON_EDGE; r.index = zero_edge; return r; }
     // on two supporting geodesics but not a vertex: rounding of p; take the nearest corner
@@ -185,6 +192,23 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
     r.type = Location::ON_VERTEX; r.index = best; return r;
   }
   throw Numerical_error("Delaunay_triangulation_on_surface::locate: the walk exceeded its work bound");
+}
+
+template <class Traits_>
+bool CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p) const
+{
+  // d(z_i, p) < duplicate_distance * (shortest edge). With s(x, y) = sinh^2(d(x, y) / 2) = |x - y|^2 / (n_x n_y)
+  // and asinh(t x) >= t asinh(x) for t in [0, 1]: s(z_i, p) >= 1e-12 s_min implies d >= 1e-6 d_min, no
+  // duplicate; the distances (transcendental) are computed only below that.
+  auto s = [](const Point_2& x, const Point_2& y) {
+    const double dx = x.x() - y.x(), dy = x.y() - y.y();
+    return (dx * dx + dy * dy) / ((1 - x.x() * x.x() - x.y() * x.y()) * (1 - y.x() * y.x() - y.y() * y.y()));
+  };
+  const double s_min = (std::min)({s(F.z[0], F.z[1]), s(F.z[1], F.z[2]), s(F.z[2], F.z[0])});
+  if(s(F.z[i], p) >= 1e-12 * s_min) return false;
+  const double tol = duplicate_distance * (std::min)({Geometry::distance(F.z[0], F.z[1]), Geometry::distance(F.z[1], F.z[2]),
+                                                      Geometry::distance(F.z[2], F.z[0])});
+  return Geometry::distance(F.z[i], p) < tol;
 }
 
 template <class Traits_>
@@ -242,7 +266,9 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, c
   link(f1, 0, L[1].first, L[1].second);
   link(f2, 0, L[2].first, L[2].second);
   link(f, 1, f1, 2); link(f1, 1, f2, 2); link(f2, 1, f, 2);
-  std::vector<Edge_ref> st{{f, 0}, {f1, 0}, {f2, 0}};
+  faces_[f].cons = F.cons & 1u; faces_[f1].cons = (F.cons >> 1) & 1u; faces_[f2].cons = (F.cons >> 2) & 1u;
+  std::vector<Edge_ref>& st = scratch_; // no allocation per insertion
+  st.clear(); st.emplace_back(f, 0); st.emplace_back(f1, 0); st.emplace_back(f2, 0);
   restore_delaunay(st);
   return w;
 }
@@ -278,7 +304,14 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_on_edge(Face_index f, i
   link(g1, 1, Lad.first, Lad.second);
   link(g, 2, Ldb.first, Ldb.second);
   link(f, 0, g1, 0); link(f, 1, f1, 2); link(f1, 0, g, 0); link(g, 1, g1, 2);
-  std::vector<Edge_ref> st{{f, 2}, {f1, 1}, {g, 2}, {g1, 1}};
+  // constraints: the halves of a constrained edge stay constrained, the outer edges keep theirs
+  const unsigned h = (F.cons >> i) & 1u;
+  faces_[f].cons = (unsigned char)(h | (((F.cons >> i2) & 1u) << 2));
+  faces_[f1].cons = (unsigned char)(h | (((F.cons >> i1) & 1u) << 1));
+  faces_[g].cons = (unsigned char)(h | (((G.cons >> j2) & 1u) << 2));
+  faces_[g1].cons = (unsigned char)(h | (((G.cons >> j1) & 1u) << 1));
+  std::vector<Edge_ref>& st = scratch_;
+  st.clear(); st.emplace_back(f, 2); st.emplace_back(f1, 1); st.emplace_back(g, 2); st.emplace_back(g1, 1);
   restore_delaunay(st);
   return w;
 }
@@ -289,7 +322,7 @@ template <class Traits_>
 bool CGAL_HSM2_DT::quad_is_convex(Face_index f, int i) const
 {
   const Face& F = faces_[f];
-  if(F.nb[i] == f) return false;
+  if(F.nb[i] == f || ((F.cons >> i) & 1u)) return false;
   const auto orient = gt_.orientation_2_object();
   const Point_2 &a = F.z[i], &b = F.z[(i + 1) % 3], &c = F.z[(i + 2) % 3];
   const Point_2 d = neighbor_apex(f, i);
@@ -322,6 +355,8 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   link(g, 0, Ldb.first, Ldb.second);
   link(g, 1, Lbc.first, Lbc.second);
   link(f, 2, g, 2);
+  faces_[f].cons = (unsigned char)(((F.cons >> i2) & 1u) | (((G.cons >> j1) & 1u) << 1));
+  faces_[g].cons = (unsigned char)(((G.cons >> j2) & 1u) | (((F.cons >> i1) & 1u) << 1));
   ++flips_;
   return true;
 }
@@ -333,7 +368,7 @@ void CGAL_HSM2_DT::restore_delaunay(std::vector<Edge_ref>& st)
   std::size_t done = 0;
   while(!st.empty()) {
     const Edge_ref e = st.back(); st.pop_back();
-    if(!is_face(e.first) || is_locally_delaunay(e.first, e.second)) continue;
+    if(!is_face(e.first) || is_locally_delaunay(e.first, e.second)) continue; // (constrained: Delaunay)
     const Face_index g = faces_[e.first].nb[e.second];
     if(!flip(e.first, e.second)) continue;
     if(++done > bound) throw Numerical_error("Delaunay_triangulation_on_surface: Lawson flips exceeded their work bound");
@@ -363,6 +398,8 @@ template <class Traits_>
 bool CGAL_HSM2_DT::remove(Vertex_index v)
 {
   if(!is_vertex(v) || nv_ <= 1) return false;
+  for(const Edge_ref& c : star(v)) // a vertex of a feature loop stays
+    if(is_constrained(c.first, c.second) || is_constrained(c.first, (c.second + 2) % 3)) return false;
   std::vector<Face_index> touched; // faces rebuilt by the degree-reducing flips: their edges are tested after
   bool done = false;
   for(std::size_t round = 0; round < 4 * nf_ + 16 && !done; ++round) {
@@ -406,6 +443,8 @@ bool CGAL_HSM2_DT::merge_star_of_degree_3(Vertex_index v, const std::vector<Edge
   const Edge_ref L1 = remap({F1.nb[e1], F1.ne[e1]}), L2 = remap({F2.nb[e2], F2.ne[e2]}), L3 = remap({F3.nb[e3], F3.ne[e3]});
   kill_face(f2); kill_face(f3);
   set_face(f1, x1, x2, x3, v1, v2, v3, F1.ref, F1.to_ref);
+  // the outer edges keep their constraints (the edges at v have none: checked by remove())
+  faces_[f1].cons = (unsigned char)(((F1.cons >> e1) & 1u) | (((F2.cons >> e2) & 1u) << 1) | (((F3.cons >> e3) & 1u) << 2));
   link(f1, 0, L1.first, L1.second);
   link(f1, 1, L2.first, L2.second);
   link(f1, 2, L3.first, L3.second);
@@ -451,6 +490,7 @@ bool CGAL_HSM2_DT::is_valid(std::string* why, double tol) const
       const int j = F.ne[i];
       if(G.nb[j] != f || G.ne[j] != i) return fail("adjacency is not symmetric");
       if(G.v[j] != F.v[(i + 1) % 3] || G.v[(j + 1) % 3] != F.v[i]) return fail("glued edges have different vertices");
+      if(is_constrained(f, i) != is_constrained(F.nb[i], j)) return fail("an edge is constrained on one side only");
       const double l1 = edge_length(f, i), l2 = Geometry::distance(G.z[j], G.z[(j + 1) % 3]);
       if(!(std::abs(l1 - l2) <= tol * (1 + l1))) return fail("glued edges have different lengths in their charts");
       if(!is_vertex(F.v[i])) return fail("a corner is not a vertex");

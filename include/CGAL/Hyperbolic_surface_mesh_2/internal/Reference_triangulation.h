@@ -13,6 +13,7 @@
 
 #include <CGAL/Hyperbolic_geometry_errors.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -46,11 +47,34 @@ struct Reference_triangulation
     std::array<std::size_t, 3> nb;     // neighbour across edge i (z[i] -> z[i+1])
     std::array<unsigned char, 3> ne;   // index of the same edge in the neighbour
     Isometry_2 to_frame;               // chart -> frame of the fundamental domain
+    std::array<Isometry_2, 3> tr;      // transitions (after cache_transitions())
+    double inner2 = 0;                 // a Klein disk about the origin inside the face: |k(q)|^2 < inner2
   };
   std::vector<Face> faces;
+  bool cached = false;
+
+  /// computes every transition once (the reference triangulation is frozen after construction)
+  void cache_transitions()
+  {
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(int i = 0; i < 3; ++i) faces[f].tr[i] = compute_transition(f, i);
+    for(Face& F : faces) {
+      // squared Euclidean distance from the origin to the Klein lines of the edges, with a 1e-6 relative margin
+      double m = 1;
+      for(int i = 0; i < 3; ++i) {
+        const Point_2 a = Geometry::to_klein(F.z[i]), b = Geometry::to_klein(F.z[(i + 1) % 3]);
+        const double ex = b.x() - a.x(), ey = b.y() - a.y(), c = a.x() * b.y() - a.y() * b.x();
+        m = (std::min)(m, c * c / (ex * ex + ey * ey));
+      }
+      F.inner2 = m * (1 - 1e-6);
+    }
+    cached = true;
+  }
 
   /// the isometry from the chart of `f` to the chart of its neighbour across edge `i`
-  Isometry_2 transition(std::size_t f, int i) const
+  Isometry_2 transition(std::size_t f, int i) const { return cached ? faces[f].tr[i] : compute_transition(f, i); }
+
+  Isometry_2 compute_transition(std::size_t f, int i) const
   {
     const Face& F = faces[f];
     const Face& G = faces[F.nb[i]];
@@ -63,6 +87,10 @@ struct Reference_triangulation
   /// not enough (the last face is kept: still a valid anchor, only farther away).
   bool walk(std::size_t& f, Point_2& q, Isometry_2& m, std::size_t max_steps = 256) const
   {
+    if(cached) { // inside the inner Klein disk of the face: no orientation test needed
+      const double n = q.x() * q.x() + q.y() * q.y(), w = 4 / ((1 + n) * (1 + n));
+      if(n * w < faces[f].inner2) return true;
+    }
     const Traits gt;
     const auto orient = gt.orientation_2_object();
     int came_from = -1;

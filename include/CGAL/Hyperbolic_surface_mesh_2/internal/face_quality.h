@@ -8,8 +8,12 @@
 #define CGAL_HYPERBOLIC_SURFACE_MESH_2_INTERNAL_FACE_QUALITY_H
 
 #include <CGAL/Hyperbolic_surface_2/hyperbolic_triangle.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/Bounded_double.h>
+#include <CGAL/Poincare_disk_traits_2/internal/filtered_evaluation.h>
+#include <CGAL/Poincare_disk_traits_2/internal/polynomials.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -19,6 +23,79 @@
 namespace CGAL {
 namespace Hyperbolic_surface_mesh_2 {
 namespace internal {
+
+/// The quantities of a triangle (p, q, r) of Poincare coordinates that the criteria compare, for any number type
+/// of the evaluation stages (Bounded_double, Interval_nt, exact rationals): the circle coefficients (traits'
+/// `Circle_coefficients`: the circle is compact iff delta > 0, sinh^2 h = sinh2 / delta, cosh^2 h =
+/// (A - G)^2 / delta), nn = (1 - |p|^2)(1 - |q|^2)(1 - |r|^2) and, per edge, a[i] = sinh^2(d_i / 2) nn.
+/// Both shape tests hold for the shortest edge iff they hold for some edge (the central angle grows with the
+/// edge length on a given circle), so no shortest edge is chosen: isosceles faces (many, on symmetric
+/// surfaces) would be undecided ties.
+template <class NT>
+struct Triangle_terms
+{
+  Poincare_disk_internal::Circle_coefficients<NT> cc;
+  NT delta, sinh2, nn;
+  std::array<NT, 3> a;
+  Triangle_terms(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry)
+    : cc(px, py, qx, qy, rx, ry), delta(cc.delta()), sinh2(cc.sinh2_numerator())
+  {
+    using namespace Poincare_disk_internal;
+    const NT np = lift_n(px, py), nq = lift_n(qx, qy), nr = lift_n(rx, ry);
+    nn = np * nq * nr;
+    // sinh^2(d/2) = |x - y|^2 / (n_x n_y): times nn, the edge pq gives |p - q|^2 n_r
+    a = {{squared_euclidean(px, py, qx, qy) * nr, squared_euclidean(qx, qy, rx, ry) * np,
+          squared_euclidean(rx, ry, px, py) * nq}};
+  }
+};
+
+/// `s[i]` are the signs of a per-edge test (POSITIVE: the edge is poor): POSITIVE if some edge is certainly
+/// poor, NEGATIVE if no edge is, else throws `Uncertain_conversion_exception` (the caller's next stage decides)
+template <class S>
+Sign any_edge_poor(const S& s0, const S& s1, const S& s2)
+{
+  if(certainly(s0 == POSITIVE) || certainly(s1 == POSITIVE) || certainly(s2 == POSITIVE)) return POSITIVE;
+  if(certainly(s0 != POSITIVE) && certainly(s1 != POSITIVE) && certainly(s2 != POSITIVE)) return NEGATIVE;
+  throw Uncertain_conversion_exception("any_edge_poor: undecided");
+}
+
+/// Chew's shape test, exact: POSITIVE iff the shortest edge d_min is shorter than the circumradius h (the
+/// central angle of the shortest edge is below theta*(h)), for a compact circumcircle (else NEGATIVE: no
+/// circumradius; the size test already calls the face poor). With cosh d = 1 + 2 a / nn, per edge:
+///   d < h  <=>  (2 a + nn)^2 / nn^2 < (A - G)^2 / delta  <=>  (A - G)^2 nn^2 - (2 a + nn)^2 delta > 0.
+template <class NT>
+Sign chew_shape_sign(const Triangle_terms<NT>& t)
+{
+  if(!bool(sign_of(t.delta) == POSITIVE)) return NEGATIVE;
+  const NT amg = t.cc.A - t.cc.G, lhs = amg * amg * t.nn * t.nn;
+  auto edge = [&](const NT& a) { const NT w = NT(2) * a + t.nn; return sign_of(lhs - w * w * t.delta); };
+  return any_edge_poor(edge(t.a[0]), edge(t.a[1]), edge(t.a[2]));
+}
+struct Chew_shape_polynomial
+{
+  template <class NT>
+  Sign operator()(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry) const
+  { return chew_shape_sign(Triangle_terms<NT>(px, py, qx, qy, rx, ry)); }
+};
+
+/// Ruppert's shape test on the same terms: POSITIVE iff the central angle of the shortest edge is below alpha,
+/// sin^2(theta_i / 2) = a_i delta / (sinh2 nn) < sin^2(alpha / 2) for some edge (the traits'
+/// `Compare_central_angle_2` polynomial, per edge); for a compact circumcircle only.
+template <class NT>
+Sign ruppert_shape_sign(const Triangle_terms<NT>& t, const NT& sin2_half_alpha)
+{
+  const NT b = sin2_half_alpha * t.sinh2 * t.nn;
+  auto edge = [&](const NT& a) { return sign_of(b - a * t.delta); };
+  return any_edge_poor(edge(t.a[0]), edge(t.a[1]), edge(t.a[2]));
+}
+
+/// the exact Chew shape test on double coordinates: interval arithmetic, then exact rationals
+template <class Point_2>
+bool chew_shape_is_poor(const Point_2& p, const Point_2& q, const Point_2& r)
+{
+  return Poincare_disk_internal::Exact_evaluator<double>::eval(Chew_shape_polynomial(), p.x(), p.y(), q.x(), q.y(),
+                                                               r.x(), r.y()) == POSITIVE;
+}
 
 template <class DT>
 class Face_quality
@@ -65,52 +142,69 @@ public:
     return 2 * std::asin((std::min)(1.0, s));
   }
 
-  /// the poor-face test of the criterion
-  bool is_bad(Face_index f) const
+  /// The poor-face test and the queue key (the circumradius, +infinity if not compact) of f, in one pass:
+  /// first in Bounded_double arithmetic (a rigorous error bound, no rounding-mode switch), and where that
+  /// cannot decide, by `is_bad_exact()` (the traits' predicates, interval then exact). Every decision is exact.
+  struct Evaluation { bool bad; double key; };
+  Evaluation evaluate(Face_index f) const
   {
     const auto& z = t_.lift(f);
+    Evaluation r;
+    if(fast_evaluate(z[0], z[1], z[2], r)) return r;
+    return {is_bad_exact(z[0], z[1], z[2]), circumradius(f)};
+  }
+  /// `evaluate().bad` on a triangle of the disk
+  bool evaluate_points(const Point_2& p, const Point_2& q, const Point_2& r) const
+  {
+    Evaluation ev;
+    return fast_evaluate(p, q, r, ev) ? ev.bad : is_bad_exact(p, q, r);
+  }
+  /// the Bounded_double stage of `evaluate()` on a triangle of the disk: false if it cannot decide
+  bool fast_evaluate(const Point_2& p, const Point_2& q, const Point_2& r, Evaluation& ev) const
+  {
+    typedef Bounded_double BD;
+    const BD px(p.x()), py(p.y()), qx(q.x()), qy(q.y()), rx(r.x()), ry(r.y());
+    try {
+      const Triangle_terms<BD> t(px, py, qx, qy, rx, ry);
+      if(!bool(t.delta.sign() == POSITIVE)) { ev = {true, std::numeric_limits<double>::infinity()}; return true; }
+      ev.key = std::asinh(std::sqrt((std::max)(0.0, t.sinh2.v / t.delta.v)));
+      // size: cosh^2 h > cosh^2 eps  <=>  sinh2 - (cosh^2 eps - 1) delta > 0 (the traits' polynomial)
+      if(bool((t.sinh2 - (BD(cosh2_eps_) - BD(1)) * t.delta).sign() == POSITIVE)) { ev.bad = true; return true; }
+      if(chew_) ev.bad = chew_shape_sign(t) == POSITIVE;
+      else ev.bad = ruppert_shape_sign(t, BD(sin2_half_alpha_)) == POSITIVE;
+      return true;
+    } catch(Uncertain_conversion_exception&) {
+      return false;
+    }
+  }
+  /// the poor-face test of the criterion
+  bool is_bad(Face_index f) const { return evaluate(f).bad; }
+  /// the same test decided by the traits' predicates (and, for Chew, `chew_shape_is_poor()`) only
+  bool is_bad_exact(Face_index f) const { const auto& z = t_.lift(f); return is_bad_exact(z[0], z[1], z[2]); }
+  bool is_bad_exact(const Point_2& p, const Point_2& q, const Point_2& r) const
+  {
     const auto& gt = t_.geom_traits();
-    if(gt.compare_hyperbolic_circumradius_2_object()(z[0], z[1], z[2], cosh2_eps_) == CGAL::LARGER) return true;
-    if(chew_) return shortest_edge(f) < circumradius(f) * (1 - 1e-12); // central angle < theta*(r)
-    return gt.compare_central_angle_2_object()(z[0], z[1], z[2], sin2_half_alpha_) == CGAL::SMALLER;
+    if(gt.compare_hyperbolic_circumradius_2_object()(p, q, r, cosh2_eps_) == CGAL::LARGER) return true;
+    if(chew_) return chew_shape_is_poor(p, q, r); // central angle < theta*(r): shortest edge < r
+    return gt.compare_central_angle_2_object()(p, q, r, sin2_half_alpha_) == CGAL::SMALLER;
   }
 
   /// the circumcentre of f in its chart (or the chart's origin, the barycentre, if the circle is not compact)
   Point_2 steiner_point(Face_index f, bool& barycentre) const
   {
-    barycentre = !is_compact(f);
-    if(barycentre) return Point_2(0, 0);
     const auto& z = t_.lift(f);
-    return t_.geom_traits().construct_hyperbolic_circumcenter_2_object()(z[0], z[1], z[2]);
+    barycentre = false;
+    try { return t_.geom_traits().construct_hyperbolic_circumcenter_2_object()(z[0], z[1], z[2]); } // checks compactness
+    catch(const Poincare_disk_domain_error&) { barycentre = true; return Point_2(0, 0); }
   }
 
-  /// faces incident to a loop edge, to an extra copy of a multiple edge, or with the vertex triple of another face
+  /// faces incident to a loop edge or to a copy of a multiple edge, or (two faces only) with the vertex triple
+  /// of the other face (see `is_simplicial_complex()`)
   std::vector<Face_index> faces_at_non_simplicial_edges() const
   {
     std::vector<Face_index> r;
-    typedef std::pair<std::pair<Vertex_index, Vertex_index>, std::array<Face_index, 2> > Edge;
-    typedef std::pair<std::array<Vertex_index, 3>, Face_index> Triple;
-    std::vector<Edge> edges;
-    std::vector<Triple> triples;
-    for(Face_index f : t_.faces()) {
-      for(int i = 0; i < 3; ++i) {
-        const Vertex_index a = t_.vertex(f, i), b = t_.vertex(f, (i + 1) % 3);
-        const Face_index g = t_.neighbor(f, i);
-        if(a == b) { r.push_back(f); continue; }
-        if(f < g || (f == g && i < t_.mirror_index(f, i)))
-          edges.push_back(Edge(std::make_pair((std::min)(a, b), (std::max)(a, b)), std::array<Face_index, 2>{{f, g}}));
-      }
-      std::array<Vertex_index, 3> tr{{t_.vertex(f, 0), t_.vertex(f, 1), t_.vertex(f, 2)}};
-      std::sort(tr.begin(), tr.end());
-      triples.push_back(Triple(tr, f));
-    }
-    std::sort(edges.begin(), edges.end());
-    for(std::size_t i = 1; i < edges.size(); ++i)
-      if(edges[i].first == edges[i - 1].first)
-        for(const Edge* e : {&edges[i], &edges[i - 1]}) { r.push_back(e->second[0]); r.push_back(e->second[1]); }
-    std::sort(triples.begin(), triples.end());
-    for(std::size_t i = 1; i < triples.size(); ++i)
-      if(triples[i].first == triples[i - 1].first) { r.push_back(triples[i].second); r.push_back(triples[i - 1].second); }
+    t_.for_each_non_simplicial_edge([&](Face_index f, int i) { r.push_back(f); r.push_back(t_.neighbor(f, i)); return true; });
+    if(r.empty() && !t_.is_simplicial_complex()) for(Face_index f : t_.faces()) r.push_back(f);
     std::sort(r.begin(), r.end());
     r.erase(std::unique(r.begin(), r.end()), r.end());
     return r;
@@ -129,8 +223,17 @@ public:
     st.maximum_circumradius = 0;
     st.minimum_angle = CGAL_PI; st.maximum_angle = 0;
     for(Face_index f : t_.faces()) {
-      st.minimum_central_angle = (std::min)(st.minimum_central_angle, central_angle(f));
-      st.maximum_circumradius = (std::max)(st.maximum_circumradius, circumradius(f));
+      // circumradius and central angle in double precision (statistics only): sinh^2 h = sinh2 / delta,
+      // sin^2(theta / 2) = a_min delta / (sinh2 nn)
+      const auto& z = t_.lift(f);
+      const Triangle_terms<double> tt(z[0].x(), z[0].y(), z[1].x(), z[1].y(), z[2].x(), z[2].y());
+      if(!(tt.delta > 0)) { st.minimum_central_angle = 0; st.maximum_circumradius = std::numeric_limits<double>::infinity(); }
+      else {
+        const double a_min = (std::min)({tt.a[0], tt.a[1], tt.a[2]});
+        st.maximum_circumradius = (std::max)(st.maximum_circumradius, std::asinh(std::sqrt(tt.sinh2 / tt.delta)));
+        const double s2 = a_min * tt.delta / (tt.nn * tt.sinh2);
+        st.minimum_central_angle = (std::min)(st.minimum_central_angle, 2 * std::asin(std::sqrt((std::min)(1.0, s2))));
+      }
       const double l[3] = {t_.edge_length(f, 0), t_.edge_length(f, 1), t_.edge_length(f, 2)};
       for(int i = 0; i < 3; ++i) {
         const double a = Hyperbolic_surface_2::corner_angle(l[(i + 1) % 3], l[i], l[(i + 2) % 3]);
