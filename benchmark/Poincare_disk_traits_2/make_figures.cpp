@@ -28,6 +28,7 @@
 
 typedef CGAL::Poincare_disk_traits_2<> Gt;
 typedef Gt::Point_2 Point;
+namespace SP = CGAL::Poincare_disk_svg::parameters;
 
 namespace {
 
@@ -63,8 +64,8 @@ std::vector<double> face_xy(Face_handle f)
 
 void legend(CGAL::Poincare_disk_svg_writer& svg, const std::string& line1, const std::string& line2)
 {
-  svg.add_text(10, 20, line1, 14);
-  svg.add_text(10, 38, line2, 12, "#444");
+  svg.add_text(10, 20, line1, SP::font_size(14.0));
+  svg.add_text(10, 38, line2, SP::font_size(12.0, SP::fill(std::string("#444"))));
 }
 
 } // namespace
@@ -77,13 +78,13 @@ int main(int argc, char** argv)
   { // 1. hyperbolic Delaunay triangulation
     const std::vector<Point> pts = random_hyperbolic(150, 4.0, 7);
     CGAL::Delaunay_triangulation_2<Gt> dt(pts.begin(), pts.end());
-    CGAL::Poincare_disk_svg_writer svg(700);
+    CGAL::Poincare_disk_svg_writer svg(SP::image_size(700.0));
     svg.add_unit_circle();
     std::size_t compact = 0, other = 0;
     for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
       const bool h = gt.is_Delaunay_hyperbolic_2_object()(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
       (h ? compact : other)++;
-      svg.add_geodesic_polygon(face_xy(f), h ? "#cfe0f5" : "#f8d9b0", "#1d3f6e", 0.6);
+      svg.add_geodesic_polygon(face_xy(f), SP::fill(std::string(h ? "#cfe0f5" : "#f8d9b0"), SP::stroke(std::string("#1d3f6e"), SP::stroke_width(0.6))));
     }
     int drawn = 0;
     for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end() && drawn < 3; ++f) {
@@ -91,10 +92,10 @@ int main(int argc, char** argv)
       if(!gt.is_Delaunay_hyperbolic_2_object()(a, b, c) || std::hypot(a.x(), a.y()) > 0.7) continue;
       // the empty circle: the Euclidean circle through the three vertices
       const Point o = CGAL::circumcenter(a, b, c);
-      svg.add_euclidean_circle(o.x(), o.y(), std::sqrt(CGAL::squared_distance(o, a)), "#0a0", 1.5);
+      svg.add_euclidean_circle(o.x(), o.y(), std::sqrt(CGAL::squared_distance(o, a)), SP::stroke(std::string("#0a0"), SP::stroke_width(1.5)));
       ++drawn;
     }
-    for(const Point& p : pts) svg.add_point(p, "#c00", 2);
+    for(const Point& p : pts) svg.add_point(p, SP::fill(std::string("#c00"), SP::radius(2.0)));
     legend(svg, "Delaunay_triangulation_2<Poincare_disk_traits_2<>>: 150 points",
            std::to_string(compact) + " faces with a compact circumcircle (blue), " + std::to_string(other) +
              " with a horocycle / hypercycle (orange); green: empty circles");
@@ -113,21 +114,20 @@ int main(int argc, char** argv)
     for(const auto& c : cons) cdt.insert_constraint(c.first, c.second);
     const std::vector<Point> pts = random_hyperbolic(60, 2.5, 3);
     cdt.insert(pts.begin(), pts.end());
-    CGAL::Poincare_disk_svg_writer svg(700);
+    CGAL::Poincare_disk_svg_writer svg(SP::image_size(700.0));
     svg.add_unit_circle();
     for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-      svg.add_geodesic_polygon(face_xy(f), "#eef3fa", "#5a7cab", 0.6);
+      svg.add_geodesic_polygon(face_xy(f), SP::fill(std::string("#eef3fa"), SP::stroke(std::string("#5a7cab"), SP::stroke_width(0.6))));
     for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
       if(cdt.is_constrained(*e))
-        svg.add_geodesic_segment(e->first->vertex(cdt.ccw(e->second))->point(), e->first->vertex(cdt.cw(e->second))->point(),
-                                 "#c00", 2.0);
+        svg.add_geodesic_segment(e->first->vertex(cdt.ccw(e->second))->point(), e->first->vertex(cdt.cw(e->second))->point(), SP::stroke(std::string("#c00"), SP::stroke_width(2.0)));
     std::size_t crossings = 0;
     for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
       bool input = false;
       for(const Point& p : hept) input |= (p == v->point());
       for(const Point& p : pts) input |= (p == v->point());
-      if(!input) { svg.add_point(v->point(), "#000", 4); ++crossings; }
-      else svg.add_point(v->point(), "#c00", 2);
+      if(!input) { svg.add_point(v->point(), SP::fill(std::string("#000"), SP::radius(4.0))); ++crossings; }
+      else svg.add_point(v->point(), SP::fill(std::string("#c00"), SP::radius(2.0)));
     }
     legend(svg, "Constrained_Delaunay_triangulation_2 with Exact_predicates_tag",
            "geodesic constraints (red) split at their " + std::to_string(crossings) + " intersection points (black)");
@@ -143,32 +143,31 @@ int main(int argc, char** argv)
     const std::vector<Point> hex = polygon(6, 3.0, 0.3);
     for(std::size_t i = 0; i < hex.size(); ++i) cdt.insert_constraint(hex[i], hex[(i + 1) % hex.size()]);
     CGAL::refine_Delaunay_mesh_2(cdt, CGAL::Hyperbolic_Ruppert_mesh_criteria_2<CDT>(2 * 20.0 * PI / 180, 0.5));
-    CGAL::Poincare_disk_svg_writer svg(700);
+    CGAL::Poincare_disk_svg_writer svg(SP::image_size(700.0));
     svg.add_unit_circle();
     std::size_t faces = 0;
     for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
       if(!f->is_in_domain()) continue;
       ++faces;
-      svg.add_geodesic_polygon(face_xy(f), "#e3f1e3", "#2f6b2f", 0.6);
+      svg.add_geodesic_polygon(face_xy(f), SP::fill(std::string("#e3f1e3"), SP::stroke(std::string("#2f6b2f"), SP::stroke_width(0.6))));
     }
     for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
       if(cdt.is_constrained(*e))
-        svg.add_geodesic_segment(e->first->vertex(cdt.ccw(e->second))->point(), e->first->vertex(cdt.cw(e->second))->point(),
-                                 "#c00", 1.5);
+        svg.add_geodesic_segment(e->first->vertex(cdt.ccw(e->second))->point(), e->first->vertex(cdt.cw(e->second))->point(), SP::stroke(std::string("#c00"), SP::stroke_width(1.5)));
     legend(svg, "refine_Delaunay_mesh_2 + Hyperbolic_Ruppert_mesh_criteria_2",
            std::to_string(faces) + " faces in a geodesic hexagon (circumradius 3): central angle >= 40 deg, radius <= 0.5");
     svg.write(dir + "refined_mesh.svg");
   }
 
   { // 4. hyperbolic diametral disk vs Thales disk
-    CGAL::Poincare_disk_svg_writer svg(700);
+    CGAL::Poincare_disk_svg_writer svg(SP::image_size(700.0));
     svg.add_unit_circle();
     const Point p(-0.15, 0.55), q(0.75, 0.2);
-    svg.add_geodesic_segment(p, q, "#c00", 2.5);
+    svg.add_geodesic_segment(p, q, SP::stroke(std::string("#c00"), SP::stroke_width(2.5)));
     const Point m = gt.construct_hyperbolic_midpoint_2_object()(p, q);
     const double d = gt.compute_hyperbolic_distance_2_object()(p, q);
     const auto circle = gt.construct_hyperbolic_circle_2_object().from_radius(m, d / 2);
-    svg.add_euclidean_circle(circle.center().x(), circle.center().y(), std::sqrt(circle.squared_radius()), "#0a0", 2);
+    svg.add_euclidean_circle(circle.center().x(), circle.center().y(), std::sqrt(circle.squared_radius()), SP::stroke(std::string("#0a0"), SP::stroke_width(2.0)));
     const double tx = (p.x() + q.x()) / 2, ty = (p.y() + q.y()) / 2;
     svg.add_raw("<circle cx=\"" + std::to_string(350 + tx * 336) + "\" cy=\"" + std::to_string(350 - ty * 336) +
                 "\" r=\"" + std::to_string(336 * std::hypot(p.x() - q.x(), p.y() - q.y()) / 2) +
@@ -181,10 +180,10 @@ int main(int argc, char** argv)
       if(s.x() * s.x() + s.y() * s.y() >= 0.98) continue;
       const bool enc = gt.angle_2_object()(p, s, q) == CGAL::OBTUSE;
       const bool thales = (p.x() - s.x()) * (q.x() - s.x()) + (p.y() - s.y()) * (q.y() - s.y()) < 0;
-      if(enc != thales) svg.add_point(s, enc ? "#0a0" : "#777", 2.5);
+      if(enc != thales) svg.add_point(s, SP::fill(std::string(enc ? "#0a0" : "#777"), SP::radius(2.5)));
     }
-    svg.add_point(p, "#c00", 4);
-    svg.add_point(q, "#c00", 4);
+    svg.add_point(p, SP::fill(std::string("#c00"), SP::radius(4.0)));
+    svg.add_point(q, SP::fill(std::string("#c00"), SP::radius(4.0)));
     legend(svg, "Encroachment of pq: hyperbolic diametral disk (green) vs Thales (dashed)",
            "dots: points where the two tests disagree, by Angle_2 (green: OBTUSE = encroaching)");
     svg.write(dir + "encroachment.svg");
