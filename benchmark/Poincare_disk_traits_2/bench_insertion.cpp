@@ -25,8 +25,8 @@
 #include <CGAL/Poincare_disk_traits_2.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdlib>
 #include <iostream>
 #include <random>
@@ -86,9 +86,10 @@ static double best_time(int reps, std::size_t& vertices, const F& build)
 {
   double best = 1e300;
   for(int i = 0; i < reps; ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
+    // process CPU time, so that the ratios of a row do not depend on what else the machine runs
+    const std::clock_t t0 = std::clock();
     vertices = build();
-    best = (std::min)(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    best = (std::min)(best, double(std::clock() - t0) / CLOCKS_PER_SEC);
   }
   return best;
 }
