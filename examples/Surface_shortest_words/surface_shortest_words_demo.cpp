@@ -4,9 +4,13 @@
 //  - a random loop through the base point is shortened (Algorithm 2) and its word computed (Algorithm 4),
 //  - its free shortest loop (Algorithm 3) is computed,
 //  - the picture surface_shortest_words_demo.svg shows the lift of the shortest loop in the Poincare disk,
-//    the tiling by lifts of the fundamental octagon and the generators.
+//    the tiling by lifts of the fundamental octagon and the generators;
+//  - on eight.off with the Ricci flow metric (if that package is present): the canonical system of shortest
+//    geodesic loops through p (thesis Theorem 2.6) and the fundamental polygon they bound, drawn in
+//    CGAL_HC_OUTPUT_DIR/geodesic_fundamental_polygon_eight.svg with its neighbouring translates.
 // Usage: surface_shortest_words_demo [loop_steps] [seed]
 #include <CGAL/Surface_shortest_words.h>
+#include <CGAL/Surface_shortest_words/geodesic_canonical_system.h>
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
 #if __has_include(<CGAL/Discrete_Ricci_flow.h>)
@@ -171,6 +175,52 @@ int main(int argc, char** argv)
       const auto r8 = solver8.solve(s8.path_from_halfedges(walk));
       std::cout << "random loop of " << walk.size() << " edges: shortest loop through p " << r8.length
                 << ", word " << solver8.word_to_string(r8.word) << "\n";
+
+      // Theorem 2.6: the shortest geodesic loops of the canonical system and their fundamental polygon
+      const auto sys = SSW::geodesic_canonical_system(solver8);
+      const SSW::Geodesic_system_report rep = SSW::check_geodesic_system(s8, p8, sys.loops);
+      std::cout << "geodesic canonical system: lengths";
+      for(double l : sys.lengths) std::cout << " " << l;
+      std::cout << "; simple and disjoint except at p: " << (rep.simple_and_disjoint ? "yes" : "NO")
+                << ", min angle at interior points " << rep.min_side_angle << "; polygon angle sum " << sys.angle_sum
+                << " (2 pi), area " << sys.area << " (4 pi (g-1) = " << 4 * CGAL_PI << ")\n";
+      CGAL::Poincare_disk_svg_writer psvg(900);
+      psvg.add_unit_circle();
+      // view centred at the midpoint of the diagonal P_0 P_2g
+      const Cplx d0 = SSW::internal::to_cplx(sys.polygon[0]), d1 = SSW::internal::to_cplx(sys.polygon[sys.polygon.size() / 2]);
+      const SSW::internal::Isometry pview = SSW::internal::to_origin(SSW::internal::point_along(d0, d1, 0.5 * SSW::internal::hyperbolic_distance(d0, d1)));
+      auto polygon_xy = [&](const SSW::internal::Isometry& t) {
+        std::vector<double> xy;
+        for(const auto& z : sys.polygon) {
+          const Cplx w = SSW::internal::apply_isometry(pview * t, SSW::internal::to_cplx(z));
+          xy.push_back(w.real()); xy.push_back(w.imag());
+        }
+        return xy;
+      };
+      for(int a = -4; a <= 4; ++a)
+        for(int b = -4; b <= 4; ++b) {
+          if(a == 0) continue;
+          if(b == -a) continue;
+          SSW::internal::Isometry t = a > 0 ? solver8.deck_transformation(std::size_t(a - 1)) : solver8.deck_transformation(std::size_t(-a - 1)).inverse();
+          if(b != 0) t = t * (b > 0 ? solver8.deck_transformation(std::size_t(b - 1)) : solver8.deck_transformation(std::size_t(-b - 1)).inverse());
+          psvg.add_geodesic_polygon(polygon_xy(t.normalized()), "none", "#bbbbbb", 0.6);
+        }
+      psvg.add_geodesic_polygon(polygon_xy(SSW::internal::Isometry()), "#fff3d6", "#000000", 0.8);
+      const char* side_colours[4] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd"};
+      for(std::size_t k = 0; k < sys.polygon.size(); ++k) {
+        const Cplx z0 = SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(sys.polygon[k]));
+        const Cplx z1 = SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(sys.polygon[(k + 1) % sys.polygon.size()]));
+        psvg.add_geodesic_segment(z0.real(), z0.imag(), z1.real(), z1.imag(), side_colours[std::abs(sys.relator[k]) - 1], 3.0);
+      }
+      for(const auto& z : sys.polygon) {
+        const Cplx w = SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(z));
+        psvg.add_point(w.real(), w.imag(), "#000", 3);
+      }
+      psvg.add_text(20, 30, "eight.off (Ricci flow): fundamental polygon bounded by the shortest geodesic loops", 16);
+      psvg.add_text(20, 52, "a1 (red), b1 (blue), a2 (green), b2 (purple); black: the lifts of p; grey: translates", 14);
+      const std::string svg_file = std::string(CGAL_HC_OUTPUT_DIR) + "/geodesic_fundamental_polygon_eight.svg";
+      psvg.write(svg_file);
+      std::cout << "wrote " << svg_file << "\n";
     }
 #endif
   } catch(const std::exception& e) {

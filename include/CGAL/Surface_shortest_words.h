@@ -12,5 +12,6 @@
 #include <CGAL/Surface_shortest_words/Hyperbolic_surface.h>
 #include <CGAL/Surface_shortest_words/shortest_homotopic_path.h>
 #include <CGAL/Surface_shortest_words/Shortest_word_solver.h>
+#include <CGAL/Surface_shortest_words/geodesic_canonical_system.h>
 
 #endif // CGAL_SURFACE_SHORTEST_WORDS_H

@@ -175,6 +175,25 @@ inline const Ball& ball_of(int g)
   return *p;
 }
 
+// the length d(V_0, rho(w) V_0) of the shortest loop through the polygon's corner V_0 in the class of w (2 acosh
+// |a| of the SU(1,1) matrix of rho(w) conjugated to move V_0 to the origin), and the translation length
+// 2 acosh(|tr rho(w)| / 2) (the closed geodesic), in quadruple precision
+inline Q acosh_q(Q x) { return x > Q(1e30) ? logq(2 * x) : acoshq(x); }
+inline double based_length_q(int g, const Word& w)
+{
+  const Fuchsian_group& G = fuchsian(g);
+  const Q pi = acosq(Q(-1)), n = 4 * g, cot = 1 / tanq(pi / n);
+  const M t = to_origin(polar(tanhq(acoshq(cot * cot) / 2), 0));
+  const M m = t * G.word(w) * t.inverse();
+  return double(2 * acosh_q(sqrtq(norm2(m.a))));
+}
+inline double free_length_q(int g, const Word& w)
+{
+  const M m = fuchsian(g).word(w);
+  const C tr = m.a + m.d;
+  return double(2 * acosh_q(sqrtq(norm2(tr)) / 2));
+}
+
 } // namespace ssw_test
 
 #endif // SSW_TEST_FUCHSIAN_REFERENCE_H

@@ -803,22 +803,8 @@ CGAL_HC_TEST_CASE(long_random_loops_right_element)
 // of the package: the based length d(V_0, rho(w) V_0) = 2 acosh |a| of the SU(1,1) matrix of rho(w)
 // conjugated to move V_0 to the origin, and the free length 2 acosh(|tr rho(w)| / 2).
 namespace {
-typedef ssw_test::Q Q;
-Q acosh_q(Q x) { return x > Q(1e30) ? logq(2 * x) : acoshq(x); }
-double based_length_q(int g, const SSW::Word& w)
-{
-  const ssw_test::Fuchsian_group& G = ssw_test::fuchsian(g);
-  const Q pi = acosq(Q(-1)), n = 4 * g, cot = 1 / tanq(pi / n);
-  const ssw_test::M t = ssw_test::to_origin(ssw_test::polar(tanhq(acoshq(cot * cot) / 2), 0));
-  const ssw_test::M m = t * G.word(w) * t.inverse();
-  return double(2 * acosh_q(sqrtq(ssw_test::norm2(m.a))));
-}
-double free_length_q(int g, const SSW::Word& w)
-{
-  const ssw_test::M m = ssw_test::fuchsian(g).word(w);
-  const ssw_test::C tr = m.a + m.d;
-  return double(2 * acosh_q(sqrtq(ssw_test::norm2(tr)) / 2));
-}
+using ssw_test::based_length_q;
+using ssw_test::free_length_q;
 } // namespace
 
 CGAL_HC_TEST_CASE(issue10_no_precision_limit)

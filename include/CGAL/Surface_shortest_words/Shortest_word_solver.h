@@ -8,6 +8,7 @@
 #include <CGAL/Surface_shortest_words/Hyperbolic_surface.h>
 #include <CGAL/Surface_shortest_words/shortest_homotopic_path.h>
 #include <CGAL/Surface_shortest_words/internal/words.h>
+#include <CGAL/Surface_shortest_words/internal/word_geodesic.h>
 #include <CGAL/Hyperbolic_surface_2/Homotopy_basis.h>
 #include <boost/property_map/function_property_map.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
@@ -324,7 +325,7 @@ private:
     deck_.clear();
     if(!opt_.use_geometry) return;
     try {
-      for(const auto& g : gens_) deck_.push_back(deck_transformation(s_.path_from_halfedges(g)));
+      for(const auto& g : gens_) deck_.push_back(lift_deck_transformation(s_.path_from_halfedges(g)));
     } catch(const Precision_error&) {
       deck_.clear();
     }
@@ -333,7 +334,7 @@ private:
   // The base chart: the layer's chart of the base face recentred at the base corner (p at the origin). The
   // isometry D that maps it onto its lift at the end of the lift of `loop` (a loop at p, closed by the turn to
   // the base corner): the lift of the loop ends at D(0), and loops compose: D(uv) = D(u) D(v).
-  internal::Isometry deck_transformation(const Path& loop) const
+  internal::Isometry lift_deck_transformation(const Path& loop) const
   {
     const std::vector<Step> st = s_.steps(loop);
     Step base;
@@ -359,51 +360,44 @@ private:
   }
 
   // The shortest loop through p of the element of the (geodesic) word w: w is cut into pieces whose deck
-  // transformation moves p by at most `reach`; each piece's geodesic loop is traced from the base corner to
-  // D(piece)(0) in the base chart (no lift of a path: one isometry product per letter), and the broken
-  // geodesic through these lifts of p (a quasi-geodesic: w is geodesic) is straightened by the Birkhoff
-  // rounds of chart chaining. Cost: O(|w| + R m), m the faces crossed by the result, R rounds.
+  // transformation moves p by at most `reach` (one isometry product per letter); the geodesic of their
+  // product is located piece by piece in the frames of the lattice points between the pieces, from its two
+  // end points known there to double precision, and traced between anchors
+  // (`internal::geodesic_of_deck_product()`): no lift of a path, no iterative straightening.
+  // Cost: O(|w| + m), m the faces crossed by the result.
   Shortest_path_result<TriangleMesh> word_geodesic(const Word& w) const
   {
     const Shortest_path_options& o = opt_.path_options;
     const double reach = 0.4 * o.max_lift_distance;
-    const Point p = s_.needs_corners() ? s_.corner(base_corner_) : Point::vertex(p_);
-    Step first;
-    first.face = base_face_; first.in = first.out = base_corner_;
-    // the whole word in one chart when its lift of p is within reach of double precision
+    std::vector<internal::Isometry> pieces;
+    internal::Isometry D;
     {
-      internal::Isometry D;
+      // the whole word in one piece when its lift of p is within `reach` (a lift at distance d carries errors
+      // of about 1e-14 e^d: 1e-10 at 10 units, 1e-5 at 22)
       int since = 0;
       for(int l : w) {
         const internal::Isometry& g = deck_[std::size_t(std::abs(l) - 1)];
         D = D * (l > 0 ? g : g.inverse());
         if(++since >= 8) { D = D.normalized(); since = 0; }
       }
-      const internal::Cplx T = internal::apply_isometry(D, internal::Cplx(0, 0));
-      if(internal::distance_to_origin(T) <= 0.9 * o.max_lift_distance)
-        return internal::trace_geodesic(s_, p, first, T, p, o, 0);
+      if(internal::distance_to_origin(internal::apply_isometry(D, internal::Cplx(0, 0))) <= reach)
+        return internal::geodesic_of_deck_product(s_, base_face_, base_corner_, std::vector<internal::Isometry>(1, D), o);
+      D = internal::Isometry();
     }
-    Path cur;
-    Shortest_path_result<TriangleMesh> piece;
-    std::size_t faces = 0, pieces = 0, i = 0;
-    do {
-      internal::Isometry D;
-      std::size_t j = i;
-      for(int since = 0; j < w.size(); ++j) {
-        const internal::Isometry& g = deck_[std::size_t(std::abs(w[j]) - 1)];
-        internal::Isometry n = D * (w[j] > 0 ? g : g.inverse());
-        if(++since >= 8) { n = n.normalized(); since = 0; }
-        if(j > i && internal::distance_to_origin(internal::apply_isometry(n, internal::Cplx(0, 0))) > reach) break;
+    for(std::size_t j = 0, since = 0; j < w.size(); ++j) {
+      const internal::Isometry& g = deck_[std::size_t(std::abs(w[j]) - 1)];
+      internal::Isometry n = D * (w[j] > 0 ? g : g.inverse());
+      if(++since >= 8) { n = n.normalized(); since = 0; }
+      if(j > 0 && internal::distance_to_origin(internal::apply_isometry(n, internal::Cplx(0, 0))) > reach) {
+        pieces.push_back(D.normalized());
+        D = (w[j] > 0 ? g : g.inverse());
+        since = 0;
+      } else {
         D = n;
       }
-      piece = internal::trace_geodesic(s_, p, first, internal::apply_isometry(D, internal::Cplx(0, 0)), p, o, 0);
-      faces += piece.embedded_faces;
-      for(const Point& q : piece.path) internal::append_point(s_, cur, q);
-      ++pieces;
-      i = j;
-    } while(i < w.size());
-    if(pieces == 1) return piece;
-    return internal::straighten_chained(s_, cur, o, faces);
+    }
+    pieces.push_back(D.normalized());
+    return internal::geodesic_of_deck_product(s_, base_face_, base_corner_, pieces, o);
   }
 
   void shorten()
@@ -434,6 +428,28 @@ public:
   const std::vector<halfedge_descriptor>& generator(std::size_t i) const { return gens_[i]; }
   /// true if the shortest loop through p homotopic to generator i was computed (`shorten_generators`, and
   /// within double precision; otherwise `shortened_generator_status(i)` says why)
+  /// the base corner: the corner of the cut disk at p (a halfedge of `base_face()` with target p)
+  halfedge_descriptor base_corner() const { return base_corner_; }
+  face_descriptor base_face() const { return base_face_; }
+  /// true if the deck transformations of the generators are known (`use_geometry`, within double precision)
+  bool has_deck_transformations() const { return !deck_.empty(); }
+  /// the deck transformation of generator i in the base frame (the layer's chart of `base_face()`
+  /// recentred at p): the lift from the origin of the loop of generator i ends at its image of the origin.
+  /// \throws Precision_error if `has_deck_transformations()` is false
+  const internal::Isometry& deck_transformation(std::size_t i) const
+  {
+    if(deck_.empty()) throw Precision_error("Shortest_word_solver: the deck transformations were not computed");
+    return deck_.at(i);
+  }
+  /// the shortest loop through p of the element `w` (a word in the generators), traced from the deck
+  /// transformations at any length. \throws Precision_error if it cannot be traced
+  Shortest_path_result<TriangleMesh> shortest_loop_of_word(const Word& w) const
+  {
+    if(deck_.empty()) throw Precision_error("Shortest_word_solver: the deck transformations were not computed");
+    for(int l : w)
+      if(l == 0 || std::size_t(std::abs(l)) > gens_.size()) throw Invalid_path_error("Shortest_word_solver: not a letter of the generators");
+    return word_geodesic(w);
+  }
   bool has_shortened_generator(std::size_t i) const { return i < short_gens_.size() && short_status_[i].empty(); }
   const std::string& shortened_generator_status(std::size_t i) const { return short_status_.at(i); }
   /// the shortest loop through p homotopic to generator i. \throws Precision_error if it was not computed

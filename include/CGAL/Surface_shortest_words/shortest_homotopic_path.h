@@ -204,26 +204,45 @@ Cplx lift_end_point(const Surface& surface, const typename Surface::Path& path,
   return internal::apply_isometry(chart.accumulated().inverse(), end_local);
 }
 
-// appends the end point of a trace that ends in the chart's current face, where the end point's lift is T
+// appends the end point of a trace that ends in the chart's current face, where the end point's lift is T;
+// returns the position of the end point in the chart (its lift in the current face nearest T): the traced
+// length is measured to it, so that the recorded path gives back the traced length exactly (T itself carries
+// the rounding and metric errors of the lift, up to about 1e-14 e^d at distance d)
 template <class Surface, class Chart>
-void finish_at_end(const Surface& s, const Chart& tr, const Cplx& T, const typename Surface::Point& end,
+Cplx finish_at_end(const Surface& s, const Chart& tr, const Cplx& T, const typename Surface::Point& end,
                    typename Surface::halfedge_descriptor from_corner, typename Surface::Path& path)
 {
-  if(!s.needs_corners() || !end.on_vertex) { if(!s.same_point(path.back(), end)) path.push_back(end); return; }
+  const auto& tm = s.mesh();
+  if(!end.on_vertex) {
+    Cplx best = T; double bd = std::numeric_limits<double>::infinity();
+    for(int i = 0; i < 3; ++i) {
+      const Cplx a = tr.z()[i], b = tr.z()[(i + 1) % 3];
+      Cplx q;
+      if(tr.halfedge_at(i) == end.h) q = point_along(a, b, end.t * s.length(end.h));
+      else if(tr.halfedge_at(i) == opposite(end.h, tm)) q = point_along(b, a, end.t * s.length(end.h));
+      else continue;
+      if(std::abs(q - T) < bd) { bd = std::abs(q - T); best = q; }
+    }
+    if(!s.same_point(path.back(), end)) path.push_back(end);
+    return best;
+  }
   // the corner of the current face at the lift of the end vertex
   int best = -1; double bd = std::numeric_limits<double>::infinity();
   for(int i = 0; i < 3; ++i)
-    if(target(tr.halfedge_at(i), s.mesh()) == end.v) {
+    if(target(tr.halfedge_at(i), tm) == end.v) {
       const double d = std::abs(tr.z()[(i + 1) % 3] - T);
       if(d < bd) { bd = d; best = i; }
     }
   if(best < 0) throw Precision_error("Surface_shortest_words: the trace ends in a face without the end vertex");
+  const Cplx position = tr.z()[(best + 1) % 3];
+  if(!s.needs_corners()) { if(!s.same_point(path.back(), end)) path.push_back(end); return position; }
   const typename Surface::halfedge_descriptor c = tr.halfedge_at(best);
   // (from the corner `from_corner` of the same face: along a side, marked by its midpoint)
   if(from_corner != boost::graph_traits<typename Surface::Triangle_mesh>::null_halfedge() && from_corner != c)
-    path.push_back(Surface::Point::on_edge(c == next(from_corner, s.mesh()) ? c : from_corner, 0.5));
+    path.push_back(Surface::Point::on_edge(c == next(from_corner, tm) ? c : from_corner, 0.5));
   append_point(s, path, s.corner(c));
   if(end.has_corner() && end.h != c) path.push_back(end);
+  return position;
 }
 
 // Algorithm 2, steps 4-7: the geodesic from `start` (a point of the face `first.face`, at the corner
@@ -306,8 +325,8 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
         // numerically the target is on the exit edge: continue into the next face
         if(kT < best_s * (1 - 1e-9)) throw Precision_error("Surface_shortest_words: traced geodesic misses the end point");
       } else {
-        res.length += internal::distance_to_origin(T);
-        finish_at_end(surface, tr, T, end, at_vertex ? corner : boost::graph_traits<typename Surface::Triangle_mesh>::null_halfedge(), res.path);
+        const Cplx E = finish_at_end(surface, tr, T, end, at_vertex ? corner : boost::graph_traits<typename Surface::Triangle_mesh>::null_halfedge(), res.path);
+        res.length += internal::distance_to_origin(E);
         break;
       }
     }
@@ -317,7 +336,12 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
     const Cplx za = z[best_i], zb = z[(best_i + 1) % 3];
     const double da = internal::hyperbolic_distance(za, zx), db = internal::hyperbolic_distance(zx, zb);
     const double t = da / (da + db);
-    if(t < options.vertex_snap || t > 1 - options.vertex_snap) {
+    // arriving at the end vertex: the lift T of the end carries an error of about 1e-14 e^d, so a geodesic
+    // ending at a vertex may cross an edge at it within that error; snapped to the end instead of leaving
+    // a spurious last crossing (and a kink) next to it
+    const bool at_end_a = end.on_vertex && da < 1e-6 && source(h, tm) == end.v && internal::hyperbolic_distance(za, T) < 1e-6;
+    const bool at_end_b = end.on_vertex && db < 1e-6 && target(h, tm) == end.v && internal::hyperbolic_distance(zb, T) < 1e-6;
+    if(at_end_a || at_end_b || t < options.vertex_snap || t > 1 - options.vertex_snap) {
       const halfedge_descriptor reached = t < 0.5 ? prev(h, tm) : h; // the corner of the current face at the snapped vertex
       // from a corner along a side to another corner: the side's midpoint keeps it apart from a turn
       if(at_vertex && surface.needs_corners()) res.path.push_back(Point::on_edge(reached == next(corner, tm) ? reached : corner, 0.5));
@@ -330,7 +354,7 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
       const internal::Isometry m = internal::to_origin(zv);
       tr.transform(m);
       T = internal::apply_isometry(m, T);
-      if(end.on_vertex && end.v == target(corner, tm) && internal::distance_to_origin(T) < 1e-7) {
+      if(end.on_vertex && end.v == target(corner, tm) && internal::distance_to_origin(T) < ((at_end_a || at_end_b) ? 1e-6 : 1e-7)) {
         if(surface.needs_corners() && end.has_corner() && end.h != corner) res.path.push_back(end);
         break;
       }

@@ -1,0 +1,192 @@
+// Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The shortest loop through the base point of an element of pi_1(S, p) given as a product of deck
+// transformations, at any length, without iterative straightening: the geodesic is located piece by piece
+// in local frames from its two end points, which are known there to double precision.
+#ifndef CGAL_SURFACE_SHORTEST_WORDS_INTERNAL_WORD_GEODESIC_H
+#define CGAL_SURFACE_SHORTEST_WORDS_INTERNAL_WORD_GEODESIC_H
+
+#include <CGAL/Surface_shortest_words/shortest_homotopic_path.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_shortest_words {
+namespace internal {
+
+// a point of the closed unit disk (rounding may push an image of an ideal point slightly outside)
+inline Cplx clamp_to_disk(const Cplx& z)
+{
+  const double r = std::abs(z);
+  return r > 1 ? z / r : z;
+}
+
+// the parameter lambda of the point of the Klein chord kA + lambda (kB - kA) nearest to the Klein point k
+inline double chord_parameter(const Cplx& kA, const Cplx& kB, const Cplx& k)
+{
+  const Cplx d = kB - kA;
+  return ((k - kA).real() * d.real() + (k - kA).imag() * d.imag()) / std::norm(d);
+}
+
+// A point of the geodesic gamma where it crosses an edge, in a frame of the universal cover (a lift of the
+// base chart: the base face laid out as in the layer's chart recentred at the base corner).
+template <class Surface>
+struct Geodesic_anchor
+{
+  typename Surface::Point q;   // the surface point (an edge point)
+  typename Surface::Step first; // its face (the face gamma is read in) for trace_geodesic
+  Isometry to_start;           // frame coordinates -> coordinates of trace_geodesic's start chart at q
+  Cplx Q;                      // q in frame coordinates
+};
+
+// Locates the geodesic gamma through the points A and B of the closed disk (frame coordinates; either may be
+// ideal) near the origin of the frame: walks from the base face to the face containing the foot of the
+// perpendicular from the origin to gamma, then takes the point where gamma leaves that face towards B.
+// Returns false (no anchor) if the walk exceeds its step bound or the exit point is within 1e-6 of a vertex.
+template <class Surface>
+bool anchor_on_geodesic(const Surface& s, typename Surface::face_descriptor base_face,
+                        typename Surface::halfedge_descriptor base_corner, Cplx A, Cplx B,
+                        Geodesic_anchor<Surface>& out)
+{
+  typedef typename Surface::Point Point;
+  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
+  Transient_chart<Surface> tr(s);
+  tr.set_face(base_face);
+  tr.recentre(s.position(Point::vertex(target(base_corner, s.mesh())), base_corner, tr.face_chart()));
+  tr.reset_accumulated();
+  Cplx kA = to_klein(A), kB = to_klein(B);
+  if(!(std::norm(kB - kA) > 1e-24)) return false;
+  // the foot of the perpendicular from the origin (in the Klein model, the Euclidean foot: the reflection in
+  // the diameter perpendicular to the chord preserves both)
+  Cplx X = from_klein(kA + chord_parameter(kA, kB, Cplx(0, 0)) * (kB - kA));
+  Cplx S = to_cplx(Disk::barycenter(to_point(tr.z()[0]), to_point(tr.z()[1]), to_point(tr.z()[2])));
+  auto move_all = [&](const Isometry& m) {
+    tr.transform(m);
+    A = clamp_to_disk(apply_isometry(m, A)); B = clamp_to_disk(apply_isometry(m, B));
+    X = apply_isometry(m, X); S = apply_isometry(m, S);
+  };
+  move_all(to_origin(S));
+  // straight walk (Klein model: geodesics are straight) from the barycentre of the base face to X
+  for(std::size_t step = 0;; ++step) {
+    if(step > 100000) return false;
+    Cplx K[3];
+    for(int i = 0; i < 3; ++i) K[i] = to_klein(tr.z()[i]);
+    const Cplx kX = to_klein(X), kS = to_klein(S);
+    bool inside = true;
+    for(int i = 0; i < 3; ++i)
+      if(cross(K[(i + 1) % 3] - K[i], kX - K[i]) < -1e-13) inside = false;
+    if(inside) break;
+    const Cplx u = kX - kS;
+    double best_s = -std::numeric_limits<double>::infinity(); int best_i = -1;
+    for(int i = 0; i < 3; ++i) {
+      const Cplx P = K[i] - kS, d = K[(i + 1) % 3] - K[i];
+      const double den = cross(u, d);
+      if(den == 0) continue;
+      const double sp = cross(P, d) / den, w = cross(P, u) / den;
+      if(w < -1e-9 || w > 1 + 1e-9) continue;
+      if(sp > best_s) { best_s = sp; best_i = i; }
+    }
+    if(best_i < 0) return false;
+    tr.unfold(tr.halfedge_at(best_i));
+    move_all(to_origin(to_cplx(Disk::barycenter(to_point(tr.z()[0]), to_point(tr.z()[1]), to_point(tr.z()[2])))));
+  }
+  // where gamma leaves the face towards B
+  kA = to_klein(A); kB = to_klein(B);
+  const Cplx D = kB - kA;
+  Cplx K[3];
+  for(int i = 0; i < 3; ++i) K[i] = to_klein(tr.z()[i]);
+  double best_l = -std::numeric_limits<double>::infinity(); int best_i = -1;
+  for(int i = 0; i < 3; ++i) {
+    const Cplx e = K[(i + 1) % 3] - K[i], P = K[i] - kA;
+    const double den = cross(D, e);
+    if(den == 0) continue;
+    const double l = cross(P, e) / den, w = cross(P, D) / den;
+    if(w < -1e-12 || w > 1 + 1e-12) continue;
+    if(l > best_l) { best_l = l; best_i = i; }
+  }
+  if(best_i < 0) return false;
+  const Cplx zx = from_klein(kA + best_l * D);
+  const Cplx za = tr.z()[best_i], zb = tr.z()[(best_i + 1) % 3];
+  const double da = hyperbolic_distance(za, zx), db = hyperbolic_distance(zx, zb);
+  const double t = da / (da + db);
+  if(!(t > 1e-6 && t < 1 - 1e-6)) return false;
+  const halfedge_descriptor h = tr.halfedge_at(best_i);
+  out.q = Point::on_edge(h, t);
+  out.first = typename Surface::Step();
+  out.first.face = tr.current_face();
+  // frame -> current chart -> the layer's chart of the face -> recentred at q (trace_geodesic's start chart)
+  const typename Surface::Face_chart layer = s.chart(tr.current_face());
+  const Isometry L = Disk::isometry_from_pairs(layer.z[0], layer.z[1], to_point(tr.z()[0]), to_point(tr.z()[1]));
+  out.to_start = to_origin(s.position(out.q, typename Surface::halfedge_descriptor(), layer)) * L.inverse() * tr.accumulated();
+  out.Q = apply_isometry(tr.accumulated().inverse(), zx);
+  return true;
+}
+
+// The shortest loop through the base point p (at the corner `base_corner` of `base_face`) of the element
+// D_1 D_2 ... D_n, the D_k isometries of the base frame (the base face's layer chart recentred at p), each
+// moving the origin by a bounded distance, their product a quasi-geodesic (e.g. the pieces of a geodesic
+// word). Its lift is the geodesic gamma from 0 to D_1 ... D_n (0). In the frame of the k-th lattice point
+// p_k = D_1 ... D_k (0) (coordinates M_k^-1, M_k = D_1 ... D_k), gamma is the geodesic through
+// A_k = M_k^-1 (0) and B_k = D_k+1 ... D_n (0): both are computed by sweeps of Moebius maps, which
+// contract towards the frame (a point far away, or ideal, keeps its direction to double precision), so
+// gamma is known near p_k to double precision whatever its length. gamma is anchored at an edge crossing
+// near each p_k, and the pieces between consecutive anchors are traced (trace_geodesic) in the chart of the
+// first: every point within a piece's length of its chart's origin. Cost: O(n + faces crossed by gamma).
+// Throws Precision_error if a piece cannot be traced.
+template <class Surface>
+Shortest_path_result<typename Surface::Triangle_mesh>
+geodesic_of_deck_product(const Surface& s, typename Surface::face_descriptor base_face,
+                         typename Surface::halfedge_descriptor base_corner, const std::vector<Isometry>& D,
+                         const Shortest_path_options& o)
+{
+  typedef typename Surface::Point Point;
+  typedef typename Surface::Path Path;
+  const std::size_t n = D.size();
+  const Point p = s.needs_corners() ? s.corner(base_corner) : Point::vertex(target(base_corner, s.mesh()));
+  std::vector<Cplx> A(n + 1), B(n + 1);
+  A[0] = Cplx(0, 0);
+  for(std::size_t k = 1; k <= n; ++k) A[k] = clamp_to_disk(apply_isometry(D[k - 1].inverse(), A[k - 1]));
+  B[n] = Cplx(0, 0);
+  for(std::size_t k = n; k-- > 0;) B[k] = clamp_to_disk(apply_isometry(D[k], B[k + 1]));
+  // anchors: the start p, one anchor near each p_k progressing along gamma, the end p
+  Geodesic_anchor<Surface> prev;
+  prev.q = p;
+  prev.first.face = base_face; prev.first.in = prev.first.out = base_corner;
+  prev.Q = Cplx(0, 0);
+  std::size_t prev_k = 0;
+  Isometry since; // D_{prev_k + 1} ... D_k: frame k -> frame prev_k
+  Shortest_path_result<typename Surface::Triangle_mesh> res;
+  Path& cur = res.path;
+  auto trace_to = [&](const Cplx& X, const Point& end) {
+    const Cplx T = apply_isometry(prev.to_start, X); // (identity at the start: frame 0 is the start chart at p)
+    const Shortest_path_result<typename Surface::Triangle_mesh> piece = trace_geodesic(s, prev.q, prev.first, T, end, o, 0);
+    if(cur.empty()) cur = piece.path;
+    else { cur.back() = piece.path.front(); cur.insert(cur.end(), piece.path.begin() + 1, piece.path.end()); }
+    res.length += piece.length;
+    res.embedded_faces += piece.embedded_faces;
+    if(o.progress) o.progress(res.embedded_faces);
+  };
+  for(std::size_t k = 1; k <= n; ++k) {
+    since = (since * D[k - 1]).normalized();
+    if(k == n) { trace_to(apply_isometry(since, Cplx(0, 0)), p); break; }
+    Geodesic_anchor<Surface> a;
+    if(!anchor_on_geodesic(s, base_face, base_corner, A[k], B[k], a)) continue;
+    // in the frame of the previous anchor: ahead of it along gamma (towards B), within one chart
+    const Cplx X = apply_isometry(since, a.Q);
+    const double lx = chord_parameter(to_klein(A[prev_k]), to_klein(B[prev_k]), to_klein(X));
+    const double lp = chord_parameter(to_klein(A[prev_k]), to_klein(B[prev_k]), to_klein(prev.Q));
+    if(!(lx > lp) || hyperbolic_distance(prev.Q, X) < 0.5) continue;
+    trace_to(X, a.q);
+    prev = a; prev_k = k; since = Isometry();
+  }
+  res.lift_distance = res.length;
+  return res;
+}
+
+} // namespace internal
+} // namespace Surface_shortest_words
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_SHORTEST_WORDS_INTERNAL_WORD_GEODESIC_H
