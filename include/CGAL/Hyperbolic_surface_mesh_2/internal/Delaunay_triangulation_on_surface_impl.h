@@ -22,7 +22,7 @@ template <class G> auto graph_faces(const G& g) { return faces(g); }
 // ---------------------------------------------------------------- construction
 
 template <class Traits_>
-void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
+typename CGAL_HSM2_DT::Isometry_2 CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
                             Vertex_index va, Vertex_index vb, Vertex_index vc, Face_index ref,
                             const Isometry_2& chart_to_ref)
 {
@@ -33,13 +33,14 @@ void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, co
   F.v = {{va, vb, vc}};
   F.tr_ok = 0; // the callers relink all three edges (which drops the neighbours' cached transitions too)
   F.ref = ref;
-  F.to_ref = (chart_to_ref * t.inverse()).normalized();
+  F.to_ref = rescaled(chart_to_ref * t.inverse());
   // keep the anchor near: walk the barycentre (the chart's origin) in the reference triangulation
   Point_2 q = F.to_ref.apply_unchecked(Point_2(0, 0));
   ref_.walk(F.ref, q, F.to_ref, 64);
   ref_hint_[F.ref] = f;
   ++F.version;
   for(int k = 0; k < 3; ++k) { vertices_[F.v[k]].face = f; vertices_[F.v[k]].corner = (unsigned char)k; }
+  return t;
 }
 
 template <class Traits_>
@@ -250,13 +251,16 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert(const Location& loc)
 template <class Traits_>
 typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, const Point_2& p)
 {
+  // the transitions to the outer neighbours, before f is rebuilt (an edge glued to f itself is recomputed later)
+  const Isometry_2 T[3] = {cached_transition(f, 0), cached_transition(f, 1), cached_transition(f, 2)};
   const Face F = faces_[f];
   const Vertex_index w = new_vertex();
   vertices_[w].refp = reference_of(f, p);
   const Face_index f1 = new_face(), f2 = new_face();
-  set_face(f, F.z[0], F.z[1], p, F.v[0], F.v[1], w, F.ref, F.to_ref);
-  set_face(f1, F.z[1], F.z[2], p, F.v[1], F.v[2], w, F.ref, F.to_ref);
-  set_face(f2, F.z[2], F.z[0], p, F.v[2], F.v[0], w, F.ref, F.to_ref);
+  const Face_index nf[3] = {f, f1, f2};
+  const Isometry_2 t[3] = {set_face(f, F.z[0], F.z[1], p, F.v[0], F.v[1], w, F.ref, F.to_ref),
+                           set_face(f1, F.z[1], F.z[2], p, F.v[1], F.v[2], w, F.ref, F.to_ref),
+                           set_face(f2, F.z[2], F.z[0], p, F.v[2], F.v[0], w, F.ref, F.to_ref)};
   auto remap = [&](Edge_ref e) -> Edge_ref {
     if(e.first != f) return e;
     return e.second == 0 ? Edge_ref(f, 0) : (e.second == 1 ? Edge_ref(f1, 0) : Edge_ref(f2, 0));
@@ -266,6 +270,10 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, c
   link(f1, 0, L[1].first, L[1].second);
   link(f2, 0, L[2].first, L[2].second);
   link(f, 1, f1, 2); link(f1, 1, f2, 2); link(f2, 1, f, 2);
+  for(int k = 0; k < 3; ++k) {
+    if(F.nb[k] != f) set_transition(nf[k], 0, T[k] * t[k].inverse());
+    set_transition(nf[k], 1, t[(k + 1) % 3] * t[k].inverse());
+  }
   faces_[f].cons = F.cons & 1u; faces_[f1].cons = (F.cons >> 1) & 1u; faces_[f2].cons = (F.cons >> 2) & 1u;
   std::vector<Edge_ref>& st = scratch_; // no allocation per insertion
   st.clear(); st.emplace_back(f, 0); st.emplace_back(f1, 0); st.emplace_back(f2, 0);
@@ -339,8 +347,14 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
   const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);
   const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
-  set_face(f, c, a, d, vc, va, vd, F.ref, F.to_ref);
-  set_face(g, d, b, c, vd, vb, vc, F.ref, F.to_ref);
+  // the transitions of the quadrilateral's outer edges from the chart of f (composed through g's chart), before
+  // the rebuild; an outer edge glued to f or g is recomputed later from the new charts
+  auto outer = [&](const Face& X, int k) { return X.nb[k] != f && X.nb[k] != g; };
+  const Isometry_2 Tfg = cached_transition(f, i);
+  const Isometry_2 Tca = cached_transition(f, i2), Tbc = cached_transition(f, i1);
+  const Isometry_2 Tad = cached_transition(g, j1) * Tfg, Tdb = cached_transition(g, j2) * Tfg;
+  const Isometry_2 tf = set_face(f, c, a, d, vc, va, vd, F.ref, F.to_ref);
+  const Isometry_2 tg = set_face(g, d, b, c, vd, vb, vc, F.ref, F.to_ref);
   auto remap = [&](Edge_ref e) -> Edge_ref {
     if(e.first == f && e.second == i1) return {g, 1};
     if(e.first == f && e.second == i2) return {f, 0};
@@ -355,6 +369,12 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   link(g, 0, Ldb.first, Ldb.second);
   link(g, 1, Lbc.first, Lbc.second);
   link(f, 2, g, 2);
+  const Isometry_2 tfi = tf.inverse(), tgi = tg.inverse();
+  if(outer(F, i2)) set_transition(f, 0, Tca * tfi);
+  if(outer(G, j1)) set_transition(f, 1, Tad * tfi);
+  if(outer(G, j2)) set_transition(g, 0, Tdb * tgi);
+  if(outer(F, i1)) set_transition(g, 1, Tbc * tgi);
+  set_transition(f, 2, tg * tfi);
   faces_[f].cons = (unsigned char)(((F.cons >> i2) & 1u) | (((G.cons >> j1) & 1u) << 1));
   faces_[g].cons = (unsigned char)(((G.cons >> j2) & 1u) | (((F.cons >> i1) & 1u) << 1));
   ++flips_;
@@ -382,6 +402,14 @@ template <class Traits_>
 std::vector<std::pair<std::size_t, int> > CGAL_HSM2_DT::star(Vertex_index v) const
 {
   std::vector<Edge_ref> r;
+  star(v, r);
+  return r;
+}
+
+template <class Traits_>
+void CGAL_HSM2_DT::star(Vertex_index v, std::vector<Edge_ref>& r) const
+{
+  r.clear();
   Edge_ref c(vertices_[v].face, vertices_[v].corner);
   const std::size_t bound = 3 * nf_ + 3;
   do {
@@ -391,7 +419,6 @@ std::vector<std::pair<std::size_t, int> > CGAL_HSM2_DT::star(Vertex_index v) con
     c = Edge_ref(F.nb[e], F.ne[e]);
     if(r.size() > bound) throw Numerical_error("Delaunay_triangulation_on_surface::star: broken adjacency");
   } while(c != r.front());
-  return r;
 }
 
 template <class Traits_>
