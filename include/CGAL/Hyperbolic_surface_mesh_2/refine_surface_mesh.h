@@ -156,7 +156,7 @@ public:
   {
     for(std::size_t round = 0; round < 64; ++round) {
       const std::vector<Face_index> faces = q_.faces_at_non_simplicial_edges();
-      if(faces.empty()) return Refinement_status::SUCCESS;
+      if(faces.empty()) { simplicial_ = 1; return Refinement_status::SUCCESS; } // (unchanged since: no second test)
       for(Face_index f : faces) {
         if(!t_.is_face(f)) continue;
         Entry e{Face_quality<DT>::key_of_circumradius(q_.circumradius(f)), f, t_.version(f)};
@@ -168,6 +168,9 @@ public:
     }
     return Refinement_status::WORK_BOUND_REACHED;
   }
+
+  /// 1 if `make_simplicial()` ended with a simplicial complex (the triangulation is unchanged since), else -1
+  int known_simplicial() const { return simplicial_; }
 
 private:
   struct Segment { Face_index f; int i; std::size_t version; };
@@ -323,6 +326,7 @@ private:
   std::priority_queue<Entry> queue_;
   std::vector<Segment> segments_; // constrained edges to test for encroachment (stale entries skipped)
   bool has_constraints_ = false;
+  int simplicial_ = -1;
   mutable std::vector<std::pair<Face_index, Point_2> > cavity_;
   std::vector<std::pair<Face_index, int> > star_; // the star of the last inserted vertex (reused: no allocation)
 };
@@ -365,7 +369,7 @@ Refinement_statistics refine(DT& t, bool chew, const NamedParameters& np)
   Surface_refiner<DT> r(t, q, std::size_t(max_ins), cb, verbose);
   st.status = r.run(st);
   if(st.status == Refinement_status::SUCCESS && simplicial) st.status = r.make_simplicial(st);
-  q.measure(st);
+  q.measure(st, r.known_simplicial());
   for(auto f : t.faces()) if(q.is_bad(f)) ++st.faces_failing_criteria;
   if(st.status == Refinement_status::SUCCESS && st.faces_failing_criteria > 0) st.status = Refinement_status::UNREFINABLE_FACES;
   st.flips = t.number_of_flips() - flips0;

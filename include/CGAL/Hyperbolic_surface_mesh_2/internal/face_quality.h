@@ -38,7 +38,11 @@ struct Triangle_terms
   NT delta, sinh2, nn;
   std::array<NT, 3> a;
   Triangle_terms(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry)
-    : cc(px, py, qx, qy, rx, ry), delta(cc.delta()), sinh2(cc.sinh2_numerator())
+    : Triangle_terms(Poincare_disk_internal::Circle_coefficients<NT>(px, py, qx, qy, rx, ry), px, py, qx, qy, rx, ry) {}
+  /// the same from the circle coefficients already computed (the size test needs only those)
+  Triangle_terms(const Poincare_disk_internal::Circle_coefficients<NT>& c, const NT& px, const NT& py,
+                 const NT& qx, const NT& qy, const NT& rx, const NT& ry)
+    : cc(c), delta(cc.delta()), sinh2(cc.sinh2_numerator())
   {
     using namespace Poincare_disk_internal;
     const NT np = lift_n(px, py), nq = lift_n(qx, qy), nr = lift_n(rx, ry);
@@ -169,11 +173,14 @@ public:
     typedef Bounded_double BD;
     const BD px(p.x()), py(p.y()), qx(q.x()), qy(q.y()), rx(r.x()), ry(r.y());
     try {
-      const Triangle_terms<BD> t(px, py, qx, qy, rx, ry);
-      if(!bool(t.delta.sign() == POSITIVE)) { ev = {true, std::numeric_limits<double>::infinity()}; return true; }
-      ev.key = (std::max)(0.0, t.sinh2.v / t.delta.v);
+      // the size test first, on the circle coefficients alone; the edge terms only for the shape test
+      const Poincare_disk_internal::Circle_coefficients<BD> cc(px, py, qx, qy, rx, ry);
+      const BD delta = cc.delta(), sinh2 = cc.sinh2_numerator();
+      if(!bool(delta.sign() == POSITIVE)) { ev = {true, std::numeric_limits<double>::infinity()}; return true; }
+      ev.key = (std::max)(0.0, sinh2.v / delta.v);
       // size: cosh^2 h > cosh^2 eps  <=>  sinh2 - (cosh^2 eps - 1) delta > 0 (the traits' polynomial)
-      if(bool((t.sinh2 - (BD(cosh2_eps_) - BD(1)) * t.delta).sign() == POSITIVE)) { ev.bad = true; return true; }
+      if(bool((sinh2 - (BD(cosh2_eps_) - BD(1)) * delta).sign() == POSITIVE)) { ev.bad = true; return true; }
+      const Triangle_terms<BD> t(cc, px, py, qx, qy, rx, ry);
       if(chew_) ev.bad = chew_shape_sign(t) == POSITIVE;
       else ev.bad = ruppert_shape_sign(t, BD(sin2_half_alpha_)) == POSITIVE;
       return true;
@@ -215,12 +222,13 @@ public:
   }
 
   /// fills the measured fields of the statistics
+  /// `known_simplicial`: 1 or 0 if the caller has just tested it (-1: test here)
   template <class Statistics>
-  void measure(Statistics& st) const
+  void measure(Statistics& st, int known_simplicial = -1) const
   {
     st.final_vertices = t_.number_of_vertices();
     st.final_faces = t_.number_of_faces();
-    st.simplicial_complex = t_.is_simplicial_complex();
+    st.simplicial_complex = known_simplicial >= 0 ? known_simplicial == 1 : t_.is_simplicial_complex();
     st.euler_characteristic = t_.euler_characteristic();
     st.genus = t_.genus();
     st.minimum_central_angle = CGAL_PI;
