@@ -290,10 +290,14 @@ public:
   /// `Numerical_error` if the walk exceeds its work bound (10 F + 1000 steps). Cost: the number of faces crossed.
   /// With `blocking` non-null, the walk stops before crossing a constrained edge and stores it there (else
   /// `blocking->first` is `null_index`): the point is then not visible from `start` inside the feature loops.
-  Location locate(const Point_2& p, Face_index start, std::pair<Face_index, int>* blocking = nullptr) const;
+  /// With `to_chart` non-null, the transitions crossed are composed onto `*to_chart` (on return it maps the
+  /// chart of `start` composed with the former `*to_chart` into the chart of the face found).
+  Location locate(const Point_2& p, Face_index start, std::pair<Face_index, int>* blocking = nullptr,
+                  Isometry_2* to_chart = nullptr) const;
   /// Locates a point given in the frame of the reference triangulation (the polygon's frame; for a mesh
-  /// input, the frame of its development): walks in the reference triangulation, then in this one.
-  Location locate_in_frame(const Point_2& p) const;
+  /// input, the frame of its development): walks in the reference triangulation, then in this one. With
+  /// `frame_to_chart` non-null, it receives the isometry from the frame to the chart of the face found.
+  Location locate_in_frame(const Point_2& p, Isometry_2* frame_to_chart = nullptr) const;
 
   /// Inserts the point `p` given in the chart of `start` (see `locate()`) and restores the Delaunay
   /// property. Returns the new vertex, or the existing one if `p` is (exactly) a lift of a vertex. Points on
@@ -327,6 +331,34 @@ public:
     }
     return nv_ - nv;
   }
+
+  /// What `insert_feature_loop()` did.
+  struct Feature_loop_result
+  {
+    bool complete = false;              ///< every segment of the loop is a chain of constrained edges
+    std::size_t vertices_inserted = 0;  ///< the loop's points, midpoints and crossings that are new vertices
+    std::size_t splits = 0;             ///< segments split (at a midpoint, a crossing or a vertex on them)
+    std::size_t crossings = 0;          ///< crossings with constrained edges (other loops), inserted as vertices
+    std::size_t constrained_edges = 0;  ///< edges newly constrained
+  };
+  /// Inserts a feature loop given by a lift: points `p_0, ..., p_n` in the frame of the reference triangulation
+  /// (see `insert_in_frame()`), consecutive points joined by the geodesic segments of the disk, `p_n` a lift of
+  /// `p_0` (the same point of the surface: `p_n = p_0` for a loop drawn inside the frame, `p_n = gamma(p_0)` for
+  /// a deck transformation gamma otherwise, e.g. a closed geodesic through paired sides of a polygon). The
+  /// loop (a closed geodesic, a geodesic loop, any closed geodesic polyline, e.g. the lift of a shortest loop)
+  /// becomes a chain of constrained edges: every segment that is not an edge of the triangulation is split at its
+  /// hyperbolic midpoint (conforming Delaunay refinement: a segment with an empty diametral disk is a Delaunay
+  /// edge), and where it crosses a constrained edge (another loop, a polygon side) the crossing point is inserted
+  /// on both. Loops may share points and cross each other. The constrained edges are kept by the flips and by
+  /// the refinement (`refine_Ruppert()`, `refine_Chew()`: encroachment and midpoint splits). Work bound: at most
+  /// `max_insertions` splits (then `complete` is false and the loop is partly constrained). Cost: a walk in the
+  /// reference triangulation and one along the segment per segment tested.
+  /// \throws Invalid_path_error for fewer than two points, a last point that is not a lift of the first (the
+  ///         triangulation then keeps its vertex set), or two consecutive equal points (checked first);
+  ///         Poincare_disk_domain_error for a point outside the open disk (checked first); Numerical_error if a
+  ///         segment gets too short to be split in double precision.
+  template <class PointRange>
+  Feature_loop_result insert_feature_loop(const PointRange& lift, std::size_t max_insertions = 100000);
 
   /// Removes the vertex `v` (flips its edges until it has degree 3, removes its star, restores the Delaunay
   /// property). Returns false and leaves a Delaunay triangulation with `v` if this is not possible (the last
@@ -459,6 +491,14 @@ private:
     ref_.walk(r.reference_face, r.point, m);
     return r;
   }
+  struct Loop_segment { Point_2 a, b; Vertex_index u, v; }; // a segment of a feature loop: frame ends, vertices
+  /// how a segment meets the triangulation: it is an edge (face, index), it crosses a constrained edge (face,
+  /// index) at `point` (chart) = `frame_point`, it runs through a vertex (face, corner) at `frame_point`, or
+  /// it is not an edge (split it)
+  struct Trace { enum Type { EDGE, CROSSING, VERTEX, NOT_AN_EDGE } type = NOT_AN_EDGE; Face_index face = null_index;
+                 int index = -1; Point_2 point, frame_point; };
+  Trace trace_segment(const Loop_segment& s) const;
+  Vertex_index insert_loop_point(const Point_2& frame_point);
   Vertex_index insert_in_face(Face_index f, const Point_2& p);
   Vertex_index insert_on_edge(Face_index f, int i, const Point_2& p);
   bool merge_star_of_degree_3(Vertex_index v, const std::vector<Edge_ref>& st);
@@ -479,5 +519,6 @@ private:
 } // namespace CGAL
 
 #include <CGAL/Hyperbolic_surface_mesh_2/internal/Delaunay_triangulation_on_surface_impl.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/feature_loops_impl.h>
 
 #endif // CGAL_HYPERBOLIC_SURFACE_MESH_2_DELAUNAY_TRIANGULATION_ON_SURFACE_H

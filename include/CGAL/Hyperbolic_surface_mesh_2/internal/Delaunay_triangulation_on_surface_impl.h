@@ -145,7 +145,8 @@ void CGAL_HSM2_DT::finish_construction()
 // ---------------------------------------------------------------- location
 
 template <class Traits_>
-typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start, Edge_ref* blocking) const
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start, Edge_ref* blocking,
+                                                    Isometry_2* to_chart) const
 {
   if(blocking) *blocking = Edge_ref(null_index, -1);
   internal::check_in_disk(p0, "Delaunay_triangulation_on_surface::locate");
@@ -168,6 +169,7 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
     if(cross >= 0 && blocking && is_constrained(f, cross)) { *blocking = Edge_ref(f, cross); r.face = f; r.point = p; return r; }
     if(cross >= 0) {
       p = transition(f, cross).apply_unchecked(p);
+      if(to_chart) *to_chart = rescaled(transition(f, cross) * *to_chart);
       came_from = F.ne[cross];
       f = F.nb[cross];
       continue;
@@ -180,7 +182,11 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
       if(o != CGAL::LEFT_TURN) { ++zeros; zero_edge = i; }
     }
     if(cross >= 0 && blocking && is_constrained(f, cross)) { *blocking = Edge_ref(f, cross); r.face = f; r.point = p; return r; }
-    if(cross >= 0) { p = transition(f, cross).apply_unchecked(p); came_from = F.ne[cross]; f = F.nb[cross]; continue; }
+    if(cross >= 0) {
+      p = transition(f, cross).apply_unchecked(p);
+      if(to_chart) *to_chart = rescaled(transition(f, cross) * *to_chart);
+      came_from = F.ne[cross]; f = F.nb[cross]; continue;
+    }
     r.face = f; r.point = p;
     // a lift of a vertex, up to the rounding of the transitions crossed (relative to the face's size)
     for(int i = 0; i < 3; ++i)
@@ -213,29 +219,34 @@ bool CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p) const
 }
 
 template <class Traits_>
-typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p) const
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p, Isometry_2* frame_to_chart) const
 {
   internal::check_in_disk(p, "Delaunay_triangulation_on_surface::locate_in_frame");
   std::size_t o = 0;
-  Point_2 q = ref_.faces[0].to_frame.inverse().apply_unchecked(p);
+  Isometry_2 phi = ref_.faces[0].to_frame.inverse(); // frame -> chart of the current face
+  Point_2 q = phi.apply_unchecked(p);
   Isometry_2 m;
   ref_.walk(o, q, m, 100000);
+  phi = rescaled(m * phi);
   // a live face anchored at o (or near it)
   Face_index f = ref_hint_[o];
   if(!is_face(f) || faces_[f].ref != o) {
     f = null_index;
     for(Face_index g = 0; g < faces_.size(); ++g) if(faces_[g].alive && faces_[g].ref == o) { f = g; break; }
-    if(f == null_index) { // no face anchored at o: express q in the chart of any anchored neighbour's anchor
+    if(f == null_index) { // no face anchored at o: express q in the chart of any face's anchor
       for(Face_index g = 0; g < faces_.size() && f == null_index; ++g)
         if(faces_[g].alive) {
           // map q from o to faces_[g].ref through frames (both are charts of the same domain development)
           const Isometry_2 o_to_g = ref_.faces[faces_[g].ref].to_frame.inverse() * ref_.faces[o].to_frame;
-          q = o_to_g.apply_unchecked(q); f = g;
+          q = o_to_g.apply_unchecked(q); phi = rescaled(o_to_g * phi); f = g;
         }
-      return locate(faces_[f].to_ref.inverse().apply_unchecked(q), f);
     }
   }
-  return locate(faces_[f].to_ref.inverse().apply_unchecked(q), f);
+  const Isometry_2 to_f = faces_[f].to_ref.inverse();
+  phi = rescaled(to_f * phi);
+  const Location r = locate(to_f.apply_unchecked(q), f, nullptr, frame_to_chart ? &phi : nullptr);
+  if(frame_to_chart) *frame_to_chart = phi;
+  return r;
 }
 
 // ---------------------------------------------------------------- insertion
