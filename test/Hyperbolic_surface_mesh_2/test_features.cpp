@@ -318,3 +318,27 @@ CGAL_HC_TEST_CASE(feature_loops_bad_input_work_bound_and_Chew)
   check_delaunay_up_to_rounding(u);
   check_loop_coverage(P, u, L);
 }
+
+CGAL_HC_TEST_CASE(feature_loop_crossing_itself_at_tiny_angles_stays_valid)
+{
+  // the fuzzer's input test/fuzz/corpus/surface_mesher/seed3_loop: a self-crossing hexagon of random points, the
+  // same points inserted, every third removed, Chew with epsilon 0.325: the splits cascaded at a tiny crossing
+  // angle and folded faces (a chart not counterclockwise) before split points were checked and constrained edges
+  // below 1e-6 epsilon were no longer split
+  DT t(Polygon::regular(2));
+  const double c[14] = {0.1, 0.1, 0.3, -0.2, -0.2, 0.25, 0.05, -0.3, 0.6, 0.1, -0.5, -0.4, 0.2, 0.7};
+  std::vector<Point> loop;
+  for(int k = 0; k < 6; ++k) loop.push_back(Point(c[2 * k], c[2 * k + 1]));
+  loop.push_back(loop.front());
+  CGAL_HC_CHECK(t.insert_feature_loop(loop, 300).complete);
+  std::vector<std::size_t> inserted;
+  for(int k = 0; k < 7; ++k) inserted.push_back(t.insert_in_frame(Point(c[2 * k], c[2 * k + 1])));
+  for(std::size_t k = 0; k < inserted.size(); k += 3) if(t.is_vertex(inserted[k])) t.remove(inserted[k]);
+  const auto st = HSM::refine_Chew(t, HSMP::maximum_circumradius(0.325, HSMP::maximum_number_of_insertions(2000)));
+  std::cout << "  self-crossing hexagon, Chew: " << HSM::to_string(st.status) << ", " << st.unrefinable_faces
+            << " unrefinable, minimum angle " << st.minimum_angle * 180 / CGAL_PI << " degrees" << std::endl;
+  std::string why;
+  CGAL_HC_CHECK_MSG(t.is_valid(&why, 1e-6), why);
+  CGAL_HC_CHECK(t.euler_characteristic() == -2);
+  CGAL_HC_CHECK(st.status != HSM::Refinement_status::SUCCESS || st.faces_failing_criteria == 0);
+}

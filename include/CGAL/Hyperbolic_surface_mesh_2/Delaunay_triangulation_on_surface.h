@@ -302,7 +302,8 @@ public:
   /// Inserts the point `p` given in the chart of `start` (see `locate()`) and restores the Delaunay
   /// property. Returns the new vertex, or the existing one if `p` is (exactly) a lift of a vertex. Points on
   /// an edge split the edge. Returns `null_index` (no change) for a point on an edge whose two sides are one
-  /// face (not splittable).
+  /// face (not splittable), or for a point given on an edge (a `Location` of type `ON_EDGE`) that would leave
+  /// one of the four new faces not counterclockwise (exact test; a rounded point next to a tiny angle).
   Vertex_index insert(const Point_2& p, Face_index start) { return insert(locate(p, start)); }
   /// inserts a located point (see `locate()`)
   Vertex_index insert(const Location& loc);

@@ -217,6 +217,9 @@ private:
   {
     const auto& z = t_.lift(f);
     const int j = (i + 1) % 3;
+    // a constrained edge far below the size bound is not split further: at a tiny angle between two loops the
+    // splits cascade (each half encroached by the other loop) into faces too thin for double precision
+    if(t_.edge_length(f, i) < 1e-6 * q_.epsilon()) { ++st.unrefinable_faces; return Refinement_status::SUCCESS; }
     const bool ca = is_corner(t_.vertex(f, i)), cb = is_corner(t_.vertex(f, j));
     typename DT::Location loc;
     loc.type = DT::Location::ON_EDGE; loc.face = f; loc.index = i;

@@ -301,6 +301,12 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_on_edge(Face_index f, i
   const Face F = faces_[f], G = faces_[g];
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
   const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);
+  // the four new faces must be counterclockwise in the common chart (exact): a split point off the edge by
+  // rounding, next to a tiny angle, would fold one of them (found by the fuzzer: cascading splits of a feature
+  // loop at a small crossing angle). Such a point is not inserted.
+  const auto orient = gt_.orientation_2_object();
+  if(orient(a, p, c) != CGAL::LEFT_TURN || orient(p, b, c) != CGAL::LEFT_TURN ||
+     orient(b, p, d) != CGAL::LEFT_TURN || orient(p, a, d) != CGAL::LEFT_TURN) return null_index;
   const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
   const Vertex_index w = new_vertex();
   vertices_[w].refp = reference_of(f, p);

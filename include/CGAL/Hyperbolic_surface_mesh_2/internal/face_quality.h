@@ -119,6 +119,7 @@ public:
     sin2_half_alpha_ = s * s;
   }
 
+  double epsilon() const { return epsilon_; }
   /// true if the circumcircle of f is compact (a hyperbolic circle)
   bool is_compact(Face_index f) const
   {
