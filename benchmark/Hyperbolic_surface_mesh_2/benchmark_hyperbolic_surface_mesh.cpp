@@ -8,6 +8,7 @@
 // Usage: benchmark_hyperbolic_surface_mesh [--large]   (--large: 1e6 triangles and 3e5, 1e6 points)
 //        benchmark_hyperbolic_surface_mesh --refine GENUS EPSILON   (our Chew refinement only, for profilers)
 //        benchmark_hyperbolic_surface_mesh --insert N               (the Bolza insertion comparison only)
+//        benchmark_hyperbolic_surface_mesh --throughput GENUS EPSILON (one throughput row, with Mesh_2's side)
 // Output: one "key value ..." line per measurement.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -142,6 +143,7 @@ int main(int argc, char** argv)
               << double(st.final_faces) / seconds << " status " << HSM::to_string(st.status) << std::endl;
     return 0;
   }
+  if(argc > 3 && std::strcmp(argv[1], "--throughput") == 0) { throughput(std::atoi(argv[2]), std::atof(argv[3])); return 0; }
   if(argc > 2 && std::strcmp(argv[1], "--insert") == 0) { bolza_insertion(std::size_t(std::atof(argv[2]))); return 0; }
   const bool large = argc > 1 && std::strcmp(argv[1], "--large") == 0;
   // 1. throughput

@@ -12,6 +12,7 @@
 #include <CGAL/Hyperbolic_surface_mesh_2/IO/write_surface_mesh_svg.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -45,6 +46,27 @@ int main(int argc, char** argv)
     std::cout << "Bolza octagon, Ruppert epsilon 0.25: " << sb << "\n";
     HSM::write_surface_mesh_svg(bolza, "surface_mesh_bolza.svg", true, "Bolza surface, generalized Ruppert, epsilon 0.25");
 
+    // ---- feature loops on the Bolza surface: the four axes of the side pairings (closed geodesics through the
+    //      midpoints of paired sides) and a geodesic 12-gon about the midpoint of side 0 that crosses side 0
+    {
+      const auto P = HSM::Fundamental_polygon<K>::Bolza();
+      HSM::Delaunay_triangulation_on_surface<> loops(P);
+      const CGAL::Poincare_disk_traits_2<K> gt;
+      auto mid = [&](std::size_t i) { return gt.construct_hyperbolic_midpoint_2_object()(P.vertex(i), P.vertex(i + 1)); };
+      for(std::size_t i = 0; i < 4; ++i) loops.insert_feature_loop(std::vector<K::Point_2>{mid(i), mid(i + 4)});
+      std::vector<K::Point_2> gon;
+      const auto to_m0 = HSM::Delaunay_triangulation_on_surface<>::Isometry_2::translation_from_origin(mid(0));
+      for(int k = 0; k <= 12; ++k) {
+        const double a = 2 * CGAL_PI * (k % 12) / 12 + 0.1, e = std::tanh(0.35 / 2);
+        gon.push_back(to_m0.apply_unchecked(K::Point_2(e * std::cos(a), e * std::sin(a))));
+      }
+      const auto res = loops.insert_feature_loop(gon);
+      const auto sl = HSM::refine_Ruppert(loops, HSMP::maximum_circumradius(0.15, HSMP::minimum_central_angle(20 * CGAL_PI / 180)));
+      std::cout << "Bolza surface with 5 feature loops (" << res.crossings << " crossings inserted), Ruppert epsilon 0.15, "
+                << "alpha 20 degrees: " << sl << "\n";
+      HSM::write_surface_mesh_svg(loops, "surface_mesh_loops.svg", true, "Bolza surface: 4 closed geodesics and a geodesic 12-gon as feature loops");
+    }
+
     // ---- conformal remeshing of the input
     Mesh in;
     if(!CGAL::IO::read_polygon_mesh(file, in) || in.is_empty()) { std::cerr << "cannot read " << file << "\n"; return EXIT_FAILURE; }
@@ -63,7 +85,7 @@ int main(int argc, char** argv)
     }
     HSM::write_surface_mesh_svg(*rep.surface, "surface_mesh_disk.svg", true, file + ": refined surface, epsilon " + std::to_string(eps));
     HSM::write_central_angle_histogram_svg(*rep.surface, "surface_mesh_central_angles.svg", 30, "remesh:");
-    std::cout << "wrote surface_mesh_remeshed.off, surface_mesh_disk.svg, surface_mesh_central_angles.svg, surface_mesh_bolza.svg\n";
+    std::cout << "wrote surface_mesh_remeshed.off, surface_mesh_disk.svg, surface_mesh_central_angles.svg, surface_mesh_bolza.svg, surface_mesh_loops.svg\n";
     return rep.refinement.status == HSM::Refinement_status::SUCCESS ? EXIT_SUCCESS : EXIT_FAILURE;
   } catch(const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";

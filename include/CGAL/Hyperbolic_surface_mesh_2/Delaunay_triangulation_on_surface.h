@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -219,28 +220,49 @@ public:
     return true;
   }
   /// Calls `fn(f, i)` for every loop edge (from both of its sides) and for every copy of a multiple edge (the
-  /// first copy again with each later one), until `fn` returns false. Linear (marks around each vertex's star).
+  /// first copy again with each later one), until `fn` returns false. Linear: one pass over the faces in index
+  /// order buckets each edge at its smaller vertex (counting sort), one pass over the buckets marks the other
+  /// vertices (no sort, no walk around the stars: sequential memory access).
   template <class Function>
   void for_each_non_simplicial_edge(const Function& fn) const
   {
-    std::vector<Vertex_index> mark(vertices_.size(), null_index);
-    std::vector<Edge_ref> first_edge(vertices_.size());
-    for(Vertex_index v = 0; v < vertices_.size(); ++v) {
-      if(!vertices_[v].alive) continue;
-      Edge_ref c(vertices_[v].face, vertices_[v].corner);
-      const Edge_ref first = c;
-      std::size_t guard = 0;
-      do {
-        const Face& F = faces_[c.first];
-        const Vertex_index u = F.v[(c.second + 1) % 3]; // edge c.second: v -> u
-        if(u == v) { if(!fn(c.first, c.second)) return; }
-        else if(mark[u] == v) { if(!fn(first_edge[u].first, first_edge[u].second) || !fn(c.first, c.second)) return; }
-        else { mark[u] = v; first_edge[u] = c; }
-        const int e = (c.second + 2) % 3;
-        c = Edge_ref(F.nb[e], F.ne[e]);
-        if(++guard > 3 * nf_ + 3) throw Numerical_error("Delaunay_triangulation_on_surface: broken adjacency");
-      } while(c != first);
+    const std::size_t nvc = vertices_.size();
+    auto canonical = [&](Face_index f, int i) {
+      const Face_index g = faces_[f].nb[i];
+      return f < g || (f == g && i < int(faces_[f].ne[i]));
+    };
+    std::vector<std::size_t> start(nvc + 1, 0);
+    for(Face_index f = 0; f < faces_.size(); ++f) {
+      if(!faces_[f].alive) continue;
+      for(int i = 0; i < 3; ++i) {
+        if(!canonical(f, i)) continue;
+        const Vertex_index a = faces_[f].v[i], b = faces_[f].v[(i + 1) % 3];
+        if(a == b) { if(!fn(f, i) || !fn(faces_[f].nb[i], int(faces_[f].ne[i]))) return; continue; }
+        ++start[(std::min)(a, b) + 1];
+      }
     }
+    for(std::size_t u = 0; u < nvc; ++u) start[u + 1] += start[u];
+    std::vector<std::size_t> pos(start.begin(), start.end() - 1);
+    std::vector<Vertex_index> other(start[nvc]);
+    std::vector<Edge_ref> edge(start[nvc]);
+    for(Face_index f = 0; f < faces_.size(); ++f) {
+      if(!faces_[f].alive) continue;
+      for(int i = 0; i < 3; ++i) {
+        const Vertex_index a = faces_[f].v[i], b = faces_[f].v[(i + 1) % 3];
+        if(a == b || !canonical(f, i)) continue;
+        const std::size_t k = pos[(std::min)(a, b)]++;
+        other[k] = (std::max)(a, b);
+        edge[k] = Edge_ref(f, i);
+      }
+    }
+    std::vector<Vertex_index> mark(nvc, null_index);
+    std::vector<std::size_t> first(nvc);
+    for(Vertex_index u = 0; u < nvc; ++u)
+      for(std::size_t k = start[u]; k < start[u + 1]; ++k) {
+        const Vertex_index w = other[k];
+        if(mark[w] == u) { if(!fn(edge[first[w]].first, edge[first[w]].second) || !fn(edge[k].first, edge[k].second)) return; }
+        else { mark[w] = u; first[w] = k; }
+      }
   }
   /// number of loop edges plus number of extra copies of multiple edges
   std::size_t number_of_non_simplicial_edges() const;
@@ -254,6 +276,10 @@ public:
   double area() const;
   /// the corner (face, index) of v in counterclockwise order around v
   std::vector<std::pair<Face_index, int> > star(Vertex_index v) const;
+  /// the same, into `r` (cleared first; no allocation when `r` has room)
+  void star(Vertex_index v, std::vector<std::pair<Face_index, int> >& r) const;
+  /// reserves room for `nf` faces and `nv` vertices (no copy of the arrays while the triangulation grows to that)
+  void reserve(std::size_t nf, std::size_t nv) { faces_.reserve(nf); vertices_.reserve(nv); }
   /// the degree of v (number of corners around it)
   std::size_t degree(Vertex_index v) const { return star(v).size(); }
 
@@ -264,15 +290,20 @@ public:
   /// `Numerical_error` if the walk exceeds its work bound (10 F + 1000 steps). Cost: the number of faces crossed.
   /// With `blocking` non-null, the walk stops before crossing a constrained edge and stores it there (else
   /// `blocking->first` is `null_index`): the point is then not visible from `start` inside the feature loops.
-  Location locate(const Point_2& p, Face_index start, std::pair<Face_index, int>* blocking = nullptr) const;
+  /// With `to_chart` non-null, the transitions crossed are composed onto `*to_chart` (on return it maps the
+  /// chart of `start` composed with the former `*to_chart` into the chart of the face found).
+  Location locate(const Point_2& p, Face_index start, std::pair<Face_index, int>* blocking = nullptr,
+                  Isometry_2* to_chart = nullptr) const;
   /// Locates a point given in the frame of the reference triangulation (the polygon's frame; for a mesh
-  /// input, the frame of its development): walks in the reference triangulation, then in this one.
-  Location locate_in_frame(const Point_2& p) const;
+  /// input, the frame of its development): walks in the reference triangulation, then in this one. With
+  /// `frame_to_chart` non-null, it receives the isometry from the frame to the chart of the face found.
+  Location locate_in_frame(const Point_2& p, Isometry_2* frame_to_chart = nullptr) const;
 
   /// Inserts the point `p` given in the chart of `start` (see `locate()`) and restores the Delaunay
   /// property. Returns the new vertex, or the existing one if `p` is (exactly) a lift of a vertex. Points on
   /// an edge split the edge. Returns `null_index` (no change) for a point on an edge whose two sides are one
-  /// face (not splittable).
+  /// face (not splittable), or for a point given on an edge (a `Location` of type `ON_EDGE`) that would leave
+  /// one of the four new faces not counterclockwise (exact test; a rounded point next to a tiny angle).
   Vertex_index insert(const Point_2& p, Face_index start) { return insert(locate(p, start)); }
   /// inserts a located point (see `locate()`)
   Vertex_index insert(const Location& loc);
@@ -302,6 +333,34 @@ public:
     return nv_ - nv;
   }
 
+  /// What `insert_feature_loop()` did.
+  struct Feature_loop_result
+  {
+    bool complete = false;              ///< every segment of the loop is a chain of constrained edges
+    std::size_t vertices_inserted = 0;  ///< the loop's points, midpoints and crossings that are new vertices
+    std::size_t splits = 0;             ///< segments split (at a midpoint, a crossing or a vertex on them)
+    std::size_t crossings = 0;          ///< crossings with constrained edges (other loops), inserted as vertices
+    std::size_t constrained_edges = 0;  ///< edges newly constrained
+  };
+  /// Inserts a feature loop given by a lift: points `p_0, ..., p_n` in the frame of the reference triangulation
+  /// (see `insert_in_frame()`), consecutive points joined by the geodesic segments of the disk, `p_n` a lift of
+  /// `p_0` (the same point of the surface: `p_n = p_0` for a loop drawn inside the frame, `p_n = gamma(p_0)` for
+  /// a deck transformation gamma otherwise, e.g. a closed geodesic through paired sides of a polygon). The
+  /// loop (a closed geodesic, a geodesic loop, any closed geodesic polyline, e.g. the lift of a shortest loop)
+  /// becomes a chain of constrained edges: every segment that is not an edge of the triangulation is split at its
+  /// hyperbolic midpoint (conforming Delaunay refinement: a segment with an empty diametral disk is a Delaunay
+  /// edge), and where it crosses a constrained edge (another loop, a polygon side) the crossing point is inserted
+  /// on both. Loops may share points and cross each other. The constrained edges are kept by the flips and by
+  /// the refinement (`refine_Ruppert()`, `refine_Chew()`: encroachment and midpoint splits). Work bound: at most
+  /// `max_insertions` splits (then `complete` is false and the loop is partly constrained). Cost: a walk in the
+  /// reference triangulation and one along the segment per segment tested.
+  /// \throws Invalid_path_error for fewer than two points, a last point that is not a lift of the first (the
+  ///         triangulation then keeps its vertex set), or two consecutive equal points (checked first);
+  ///         Poincare_disk_domain_error for a point outside the open disk (checked first); Numerical_error if a
+  ///         segment gets too short to be split in double precision.
+  template <class PointRange>
+  Feature_loop_result insert_feature_loop(const PointRange& lift, std::size_t max_insertions = 100000);
+
   /// Removes the vertex `v` (flips its edges until it has degree 3, removes its star, restores the Delaunay
   /// property). Returns false and leaves a Delaunay triangulation with `v` if this is not possible (the last
   /// vertex, or a star that wraps onto itself: too few vertices around `v`).
@@ -327,19 +386,22 @@ public:
   std::size_t version(Face_index f) const { return faces_[f].version; }
 
 private:
-  struct Face
+  // The fields read by the edge tests of the Lawson flips and by the walk (chart, adjacency, flags, cached
+  // transitions) come first, and a face is aligned to a cache line (256 bytes, 4 lines): the flips are bound by
+  // the cache misses on neighbouring faces.
+  struct alignas(64) Face
   {
     std::array<Point_2, 3> z;
-    std::array<Vertex_index, 3> v;
     std::array<Face_index, 3> nb;
     std::array<unsigned char, 3> ne;
+    mutable unsigned char tr_ok = 0;
+    unsigned char cons = 0;               // bit i: edge i is constrained
+    bool alive = true;
+    mutable std::array<Isometry_2, 3> tr; // transition cache (see transition()); bit i of tr_ok: tr[i] valid
+    std::array<Vertex_index, 3> v;
     Face_index ref = 0;
     Isometry_2 to_ref;
     std::size_t version = 0;
-    bool alive = true;
-    mutable std::array<Isometry_2, 3> tr; // transition cache (see transition()); bit i of tr_ok: tr[i] valid
-    mutable unsigned char tr_ok = 0;
-    unsigned char cons = 0;               // bit i: edge i is constrained
   };
   struct Vertex
   {
@@ -378,6 +440,31 @@ private:
     faces_[a].nb[i] = b; faces_[a].ne[i] = (unsigned char)j; faces_[a].tr_ok &= (unsigned char)~(1u << i);
     faces_[b].nb[j] = a; faces_[b].ne[j] = (unsigned char)i; faces_[b].tr_ok &= (unsigned char)~(1u << j);
   }
+  /// the same Moebius map with its matrix scaled by a power of two (exact) so that its determinant is in
+  /// [2^-4, 2^4]: products of recentrings (determinant 1 - |o|^2 each) neither underflow nor overflow, and no
+  /// square root is needed (the maps are homogeneous in the matrix)
+  static Isometry_2 rescaled(const Isometry_2& m)
+  {
+    const double d = m.determinant();
+    if(d >= 0.0625 && d <= 16) return m;
+    const int e = std::ilogb(d);
+    const double s = std::ldexp(1.0, -e / 2);
+    return Isometry_2(s * m.alpha_real(), s * m.alpha_imag(), s * m.beta_real(), s * m.beta_imag());
+  }
+  /// stores `m` (chart of f -> chart of neighbor(f, i)) as the transition of edge i of f, and its inverse on the
+  /// other side. Used by the insertions and flips, whose new faces are cut out of one common chart: the
+  /// transition between two new faces is the product of their recentrings, and the transition to an outer
+  /// neighbour is the old transition times the inverse recentring, with no square root (a transition computed
+  /// from the two charts by `isometry_from_pairs` needs four, and two exact disk checks)
+  void set_transition(Face_index f, int i, const Isometry_2& m)
+  {
+    Face& F = faces_[f];
+    F.tr[i] = rescaled(m);
+    F.tr_ok |= (unsigned char)(1u << i);
+    Face& G = faces_[F.nb[i]];
+    const int j = F.ne[i];
+    if(&G != &F || j != i) { G.tr[j] = F.tr[i].inverse(); G.tr_ok |= (unsigned char)(1u << j); }
+  }
   const Isometry_2& cached_transition(Face_index f, int i) const
   {
     const Face& F = faces_[f];
@@ -390,8 +477,10 @@ private:
     }
     return F.tr[i];
   }
-  /// sets face f to the triangle (a, b, c) of a common chart whose anchor is (ref, chart_to_ref); recentres it
-  void set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
+  /// sets face f to the triangle (a, b, c) of a common chart whose anchor is (ref, chart_to_ref); recentres it.
+  /// Returns the recentring isometry (common chart -> chart of f), from which the callers compose the new
+  /// transitions (no square root: see `set_transition()`)
+  Isometry_2 set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
                 Vertex_index va, Vertex_index vb, Vertex_index vc, Face_index ref, const Isometry_2& chart_to_ref);
   /// reference position of a point q of the chart of face f
   Reference_point reference_of(Face_index f, const Point_2& q) const
@@ -403,6 +492,14 @@ private:
     ref_.walk(r.reference_face, r.point, m);
     return r;
   }
+  struct Loop_segment { Point_2 a, b; Vertex_index u, v; }; // a segment of a feature loop: frame ends, vertices
+  /// how a segment meets the triangulation: it is an edge (face, index), it crosses a constrained edge (face,
+  /// index) at `point` (chart) = `frame_point`, it runs through a vertex (face, corner) at `frame_point`, or
+  /// it is not an edge (split it)
+  struct Trace { enum Type { EDGE, CROSSING, VERTEX, NOT_AN_EDGE } type = NOT_AN_EDGE; Face_index face = null_index;
+                 int index = -1; Point_2 point, frame_point; };
+  Trace trace_segment(const Loop_segment& s) const;
+  Vertex_index insert_loop_point(const Point_2& frame_point);
   Vertex_index insert_in_face(Face_index f, const Point_2& p);
   Vertex_index insert_on_edge(Face_index f, int i, const Point_2& p);
   bool merge_star_of_degree_3(Vertex_index v, const std::vector<Edge_ref>& st);
@@ -423,5 +520,6 @@ private:
 } // namespace CGAL
 
 #include <CGAL/Hyperbolic_surface_mesh_2/internal/Delaunay_triangulation_on_surface_impl.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/feature_loops_impl.h>
 
 #endif // CGAL_HYPERBOLIC_SURFACE_MESH_2_DELAUNAY_TRIANGULATION_ON_SURFACE_H

@@ -47,7 +47,7 @@ std::vector<typename DT::Isometry_2> domain_gluings(const DT& t)
   \ingroup PkgHyperbolicSurfaceMesh2Ref
   Writes the faces of `t` in the frame of its fundamental domain, and their images under the domain gluings
   (lighter), as an SVG picture of the Poincare disk. Faces are coloured by the central angle of their shortest
-  edge (red 0 degrees ... blue 60 degrees and above). Throws `std::runtime_error` if the file cannot be written.
+  edge (red 0 degrees ... blue 60 degrees and above); constrained edges (feature loops) are drawn dark red. Throws `std::runtime_error` if the file cannot be written.
 */
 template <class DT>
 void write_surface_mesh_svg(const DT& t, const std::string& filename, bool neighbouring_copies = true,
@@ -73,6 +73,16 @@ void write_surface_mesh_svg(const DT& t, const std::string& filename, bool neigh
       svg.add_geodesic_polygon(xy, CGAL::Poincare_disk_svg_writer::color_ramp(1 - a), c == 0 ? "#222" : "#777",
                                c == 0 ? 0.3 : 0.15, c == 0 ? 1.0 : 0.45);
     }
+  // the constrained edges (feature loops) on top, dark red
+  for(std::size_t c = 0; c < copies.size(); ++c)
+    for(std::size_t f : t.faces())
+      for(int i = 0; i < 3; ++i) {
+        if(!t.is_constrained(f, i) || t.neighbor(f, i) < f) continue;
+        const auto m = copies[c] * t.to_frame(f);
+        const auto p = m.apply_unchecked(t.lift(f)[i]), r = m.apply_unchecked(t.lift(f)[(i + 1) % 3]);
+        if(p.x() * p.x() + p.y() * p.y() < 0.9999 && r.x() * r.x() + r.y() * r.y() < 0.9999)
+          svg.add_geodesic_segment(p, r, c == 0 ? "#a00" : "#d88", c == 0 ? 1.6 : 0.8);
+      }
   if(!title.empty()) svg.add_text(10, 20, title);
   svg.write(filename);
 }

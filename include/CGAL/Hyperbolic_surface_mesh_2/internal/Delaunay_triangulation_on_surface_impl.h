@@ -22,7 +22,7 @@ template <class G> auto graph_faces(const G& g) { return faces(g); }
 // ---------------------------------------------------------------- construction
 
 template <class Traits_>
-void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
+typename CGAL_HSM2_DT::Isometry_2 CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
                             Vertex_index va, Vertex_index vb, Vertex_index vc, Face_index ref,
                             const Isometry_2& chart_to_ref)
 {
@@ -33,13 +33,14 @@ void CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, co
   F.v = {{va, vb, vc}};
   F.tr_ok = 0; // the callers relink all three edges (which drops the neighbours' cached transitions too)
   F.ref = ref;
-  F.to_ref = (chart_to_ref * t.inverse()).normalized();
+  F.to_ref = rescaled(chart_to_ref * t.inverse());
   // keep the anchor near: walk the barycentre (the chart's origin) in the reference triangulation
   Point_2 q = F.to_ref.apply_unchecked(Point_2(0, 0));
   ref_.walk(F.ref, q, F.to_ref, 64);
   ref_hint_[F.ref] = f;
   ++F.version;
   for(int k = 0; k < 3; ++k) { vertices_[F.v[k]].face = f; vertices_[F.v[k]].corner = (unsigned char)k; }
+  return t;
 }
 
 template <class Traits_>
@@ -144,7 +145,8 @@ void CGAL_HSM2_DT::finish_construction()
 // ---------------------------------------------------------------- location
 
 template <class Traits_>
-typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start, Edge_ref* blocking) const
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start, Edge_ref* blocking,
+                                                    Isometry_2* to_chart) const
 {
   if(blocking) *blocking = Edge_ref(null_index, -1);
   internal::check_in_disk(p0, "Delaunay_triangulation_on_surface::locate");
@@ -167,6 +169,7 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
     if(cross >= 0 && blocking && is_constrained(f, cross)) { *blocking = Edge_ref(f, cross); r.face = f; r.point = p; return r; }
     if(cross >= 0) {
       p = transition(f, cross).apply_unchecked(p);
+      if(to_chart) *to_chart = rescaled(transition(f, cross) * *to_chart);
       came_from = F.ne[cross];
       f = F.nb[cross];
       continue;
@@ -179,7 +182,11 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
       if(o != CGAL::LEFT_TURN) { ++zeros; zero_edge = i; }
     }
     if(cross >= 0 && blocking && is_constrained(f, cross)) { *blocking = Edge_ref(f, cross); r.face = f; r.point = p; return r; }
-    if(cross >= 0) { p = transition(f, cross).apply_unchecked(p); came_from = F.ne[cross]; f = F.nb[cross]; continue; }
+    if(cross >= 0) {
+      p = transition(f, cross).apply_unchecked(p);
+      if(to_chart) *to_chart = rescaled(transition(f, cross) * *to_chart);
+      came_from = F.ne[cross]; f = F.nb[cross]; continue;
+    }
     r.face = f; r.point = p;
     // a lift of a vertex, up to the rounding of the transitions crossed (relative to the face's size)
     for(int i = 0; i < 3; ++i)
@@ -212,29 +219,34 @@ bool CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p) const
 }
 
 template <class Traits_>
-typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p) const
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p, Isometry_2* frame_to_chart) const
 {
   internal::check_in_disk(p, "Delaunay_triangulation_on_surface::locate_in_frame");
   std::size_t o = 0;
-  Point_2 q = ref_.faces[0].to_frame.inverse().apply_unchecked(p);
+  Isometry_2 phi = ref_.faces[0].to_frame.inverse(); // frame -> chart of the current face
+  Point_2 q = phi.apply_unchecked(p);
   Isometry_2 m;
   ref_.walk(o, q, m, 100000);
+  phi = rescaled(m * phi);
   // a live face anchored at o (or near it)
   Face_index f = ref_hint_[o];
   if(!is_face(f) || faces_[f].ref != o) {
     f = null_index;
     for(Face_index g = 0; g < faces_.size(); ++g) if(faces_[g].alive && faces_[g].ref == o) { f = g; break; }
-    if(f == null_index) { // no face anchored at o: express q in the chart of any anchored neighbour's anchor
+    if(f == null_index) { // no face anchored at o: express q in the chart of any face's anchor
       for(Face_index g = 0; g < faces_.size() && f == null_index; ++g)
         if(faces_[g].alive) {
           // map q from o to faces_[g].ref through frames (both are charts of the same domain development)
           const Isometry_2 o_to_g = ref_.faces[faces_[g].ref].to_frame.inverse() * ref_.faces[o].to_frame;
-          q = o_to_g.apply_unchecked(q); f = g;
+          q = o_to_g.apply_unchecked(q); phi = rescaled(o_to_g * phi); f = g;
         }
-      return locate(faces_[f].to_ref.inverse().apply_unchecked(q), f);
     }
   }
-  return locate(faces_[f].to_ref.inverse().apply_unchecked(q), f);
+  const Isometry_2 to_f = faces_[f].to_ref.inverse();
+  phi = rescaled(to_f * phi);
+  const Location r = locate(to_f.apply_unchecked(q), f, nullptr, frame_to_chart ? &phi : nullptr);
+  if(frame_to_chart) *frame_to_chart = phi;
+  return r;
 }
 
 // ---------------------------------------------------------------- insertion
@@ -250,13 +262,16 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert(const Location& loc)
 template <class Traits_>
 typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, const Point_2& p)
 {
+  // the transitions to the outer neighbours, before f is rebuilt (an edge glued to f itself is recomputed later)
+  const Isometry_2 T[3] = {cached_transition(f, 0), cached_transition(f, 1), cached_transition(f, 2)};
   const Face F = faces_[f];
   const Vertex_index w = new_vertex();
   vertices_[w].refp = reference_of(f, p);
   const Face_index f1 = new_face(), f2 = new_face();
-  set_face(f, F.z[0], F.z[1], p, F.v[0], F.v[1], w, F.ref, F.to_ref);
-  set_face(f1, F.z[1], F.z[2], p, F.v[1], F.v[2], w, F.ref, F.to_ref);
-  set_face(f2, F.z[2], F.z[0], p, F.v[2], F.v[0], w, F.ref, F.to_ref);
+  const Face_index nf[3] = {f, f1, f2};
+  const Isometry_2 t[3] = {set_face(f, F.z[0], F.z[1], p, F.v[0], F.v[1], w, F.ref, F.to_ref),
+                           set_face(f1, F.z[1], F.z[2], p, F.v[1], F.v[2], w, F.ref, F.to_ref),
+                           set_face(f2, F.z[2], F.z[0], p, F.v[2], F.v[0], w, F.ref, F.to_ref)};
   auto remap = [&](Edge_ref e) -> Edge_ref {
     if(e.first != f) return e;
     return e.second == 0 ? Edge_ref(f, 0) : (e.second == 1 ? Edge_ref(f1, 0) : Edge_ref(f2, 0));
@@ -266,6 +281,10 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, c
   link(f1, 0, L[1].first, L[1].second);
   link(f2, 0, L[2].first, L[2].second);
   link(f, 1, f1, 2); link(f1, 1, f2, 2); link(f2, 1, f, 2);
+  for(int k = 0; k < 3; ++k) {
+    if(F.nb[k] != f) set_transition(nf[k], 0, T[k] * t[k].inverse());
+    set_transition(nf[k], 1, t[(k + 1) % 3] * t[k].inverse());
+  }
   faces_[f].cons = F.cons & 1u; faces_[f1].cons = (F.cons >> 1) & 1u; faces_[f2].cons = (F.cons >> 2) & 1u;
   std::vector<Edge_ref>& st = scratch_; // no allocation per insertion
   st.clear(); st.emplace_back(f, 0); st.emplace_back(f1, 0); st.emplace_back(f2, 0);
@@ -282,6 +301,12 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_on_edge(Face_index f, i
   const Face F = faces_[f], G = faces_[g];
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
   const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);
+  // the four new faces must be counterclockwise in the common chart (exact): a split point off the edge by
+  // rounding, next to a tiny angle, would fold one of them (found by the fuzzer: cascading splits of a feature
+  // loop at a small crossing angle). Such a point is not inserted.
+  const auto orient = gt_.orientation_2_object();
+  if(orient(a, p, c) != CGAL::LEFT_TURN || orient(p, b, c) != CGAL::LEFT_TURN ||
+     orient(b, p, d) != CGAL::LEFT_TURN || orient(p, a, d) != CGAL::LEFT_TURN) return null_index;
   const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
   const Vertex_index w = new_vertex();
   vertices_[w].refp = reference_of(f, p);
@@ -339,8 +364,14 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
   const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);
   const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
-  set_face(f, c, a, d, vc, va, vd, F.ref, F.to_ref);
-  set_face(g, d, b, c, vd, vb, vc, F.ref, F.to_ref);
+  // the transitions of the quadrilateral's outer edges from the chart of f (composed through g's chart), before
+  // the rebuild; an outer edge glued to f or g is recomputed later from the new charts
+  auto outer = [&](const Face& X, int k) { return X.nb[k] != f && X.nb[k] != g; };
+  const Isometry_2 Tfg = cached_transition(f, i);
+  const Isometry_2 Tca = cached_transition(f, i2), Tbc = cached_transition(f, i1);
+  const Isometry_2 Tad = cached_transition(g, j1) * Tfg, Tdb = cached_transition(g, j2) * Tfg;
+  const Isometry_2 tf = set_face(f, c, a, d, vc, va, vd, F.ref, F.to_ref);
+  const Isometry_2 tg = set_face(g, d, b, c, vd, vb, vc, F.ref, F.to_ref);
   auto remap = [&](Edge_ref e) -> Edge_ref {
     if(e.first == f && e.second == i1) return {g, 1};
     if(e.first == f && e.second == i2) return {f, 0};
@@ -355,6 +386,12 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   link(g, 0, Ldb.first, Ldb.second);
   link(g, 1, Lbc.first, Lbc.second);
   link(f, 2, g, 2);
+  const Isometry_2 tfi = tf.inverse(), tgi = tg.inverse();
+  if(outer(F, i2)) set_transition(f, 0, Tca * tfi);
+  if(outer(G, j1)) set_transition(f, 1, Tad * tfi);
+  if(outer(G, j2)) set_transition(g, 0, Tdb * tgi);
+  if(outer(F, i1)) set_transition(g, 1, Tbc * tgi);
+  set_transition(f, 2, tg * tfi);
   faces_[f].cons = (unsigned char)(((F.cons >> i2) & 1u) | (((G.cons >> j1) & 1u) << 1));
   faces_[g].cons = (unsigned char)(((G.cons >> j2) & 1u) | (((F.cons >> i1) & 1u) << 1));
   ++flips_;
@@ -382,6 +419,14 @@ template <class Traits_>
 std::vector<std::pair<std::size_t, int> > CGAL_HSM2_DT::star(Vertex_index v) const
 {
   std::vector<Edge_ref> r;
+  star(v, r);
+  return r;
+}
+
+template <class Traits_>
+void CGAL_HSM2_DT::star(Vertex_index v, std::vector<Edge_ref>& r) const
+{
+  r.clear();
   Edge_ref c(vertices_[v].face, vertices_[v].corner);
   const std::size_t bound = 3 * nf_ + 3;
   do {
@@ -391,7 +436,6 @@ std::vector<std::pair<std::size_t, int> > CGAL_HSM2_DT::star(Vertex_index v) con
     c = Edge_ref(F.nb[e], F.ne[e]);
     if(r.size() > bound) throw Numerical_error("Delaunay_triangulation_on_surface::star: broken adjacency");
   } while(c != r.front());
-  return r;
 }
 
 template <class Traits_>

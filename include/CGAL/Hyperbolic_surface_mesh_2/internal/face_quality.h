@@ -38,7 +38,11 @@ struct Triangle_terms
   NT delta, sinh2, nn;
   std::array<NT, 3> a;
   Triangle_terms(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry)
-    : cc(px, py, qx, qy, rx, ry), delta(cc.delta()), sinh2(cc.sinh2_numerator())
+    : Triangle_terms(Poincare_disk_internal::Circle_coefficients<NT>(px, py, qx, qy, rx, ry), px, py, qx, qy, rx, ry) {}
+  /// the same from the circle coefficients already computed (the size test needs only those)
+  Triangle_terms(const Poincare_disk_internal::Circle_coefficients<NT>& c, const NT& px, const NT& py,
+                 const NT& qx, const NT& qy, const NT& rx, const NT& ry)
+    : cc(c), delta(cc.delta()), sinh2(cc.sinh2_numerator())
   {
     using namespace Poincare_disk_internal;
     const NT np = lift_n(px, py), nq = lift_n(qx, qy), nr = lift_n(rx, ry);
@@ -115,6 +119,7 @@ public:
     sin2_half_alpha_ = s * s;
   }
 
+  double epsilon() const { return epsilon_; }
   /// true if the circumcircle of f is compact (a hyperbolic circle)
   bool is_compact(Face_index f) const
   {
@@ -145,14 +150,18 @@ public:
   /// The poor-face test and the queue key (the circumradius, +infinity if not compact) of f, in one pass:
   /// first in Bounded_double arithmetic (a rigorous error bound, no rounding-mode switch), and where that
   /// cannot decide, by `is_bad_exact()` (the traits' predicates, interval then exact). Every decision is exact.
+  /// The key is sinh^2 of the circumradius (increasing in it; +infinity if the circle is not compact): the
+  /// queue needs only the order, so no transcendental function is evaluated per face (`circumradius_of_key()`).
   struct Evaluation { bool bad; double key; };
   Evaluation evaluate(Face_index f) const
   {
     const auto& z = t_.lift(f);
     Evaluation r;
     if(fast_evaluate(z[0], z[1], z[2], r)) return r;
-    return {is_bad_exact(z[0], z[1], z[2]), circumradius(f)};
+    return {is_bad_exact(z[0], z[1], z[2]), key_of_circumradius(circumradius(f))};
   }
+  static double key_of_circumradius(double h) { const double s = std::sinh(h); return s * s; }
+  static double circumradius_of_key(double k) { return std::asinh(std::sqrt(k)); }
   /// `evaluate().bad` on a triangle of the disk
   bool evaluate_points(const Point_2& p, const Point_2& q, const Point_2& r) const
   {
@@ -165,11 +174,14 @@ public:
     typedef Bounded_double BD;
     const BD px(p.x()), py(p.y()), qx(q.x()), qy(q.y()), rx(r.x()), ry(r.y());
     try {
-      const Triangle_terms<BD> t(px, py, qx, qy, rx, ry);
-      if(!bool(t.delta.sign() == POSITIVE)) { ev = {true, std::numeric_limits<double>::infinity()}; return true; }
-      ev.key = std::asinh(std::sqrt((std::max)(0.0, t.sinh2.v / t.delta.v)));
+      // the size test first, on the circle coefficients alone; the edge terms only for the shape test
+      const Poincare_disk_internal::Circle_coefficients<BD> cc(px, py, qx, qy, rx, ry);
+      const BD delta = cc.delta(), sinh2 = cc.sinh2_numerator();
+      if(!bool(delta.sign() == POSITIVE)) { ev = {true, std::numeric_limits<double>::infinity()}; return true; }
+      ev.key = (std::max)(0.0, sinh2.v / delta.v);
       // size: cosh^2 h > cosh^2 eps  <=>  sinh2 - (cosh^2 eps - 1) delta > 0 (the traits' polynomial)
-      if(bool((t.sinh2 - (BD(cosh2_eps_) - BD(1)) * t.delta).sign() == POSITIVE)) { ev.bad = true; return true; }
+      if(bool((sinh2 - (BD(cosh2_eps_) - BD(1)) * delta).sign() == POSITIVE)) { ev.bad = true; return true; }
+      const Triangle_terms<BD> t(cc, px, py, qx, qy, rx, ry);
       if(chew_) ev.bad = chew_shape_sign(t) == POSITIVE;
       else ev.bad = ruppert_shape_sign(t, BD(sin2_half_alpha_)) == POSITIVE;
       return true;
@@ -204,36 +216,61 @@ public:
   {
     std::vector<Face_index> r;
     t_.for_each_non_simplicial_edge([&](Face_index f, int i) { r.push_back(f); r.push_back(t_.neighbor(f, i)); return true; });
-    if(r.empty() && !t_.is_simplicial_complex()) for(Face_index f : t_.faces()) r.push_back(f);
+    if(r.empty() && t_.number_of_faces() == 2 && !t_.is_simplicial_complex()) for(Face_index f : t_.faces()) r.push_back(f);
     std::sort(r.begin(), r.end());
     r.erase(std::unique(r.begin(), r.end()), r.end());
     return r;
   }
 
   /// fills the measured fields of the statistics
+  /// `known_simplicial`: 1 or 0 if the caller has just tested it (-1: test here)
   template <class Statistics>
-  void measure(Statistics& st) const
+  void measure(Statistics& st, int known_simplicial = -1) const
   {
     st.final_vertices = t_.number_of_vertices();
     st.final_faces = t_.number_of_faces();
-    st.simplicial_complex = t_.is_simplicial_complex();
+    st.simplicial_complex = known_simplicial >= 0 ? known_simplicial == 1 : t_.is_simplicial_complex();
     st.euler_characteristic = t_.euler_characteristic();
     st.genus = t_.genus();
     st.minimum_central_angle = CGAL_PI;
     st.maximum_circumradius = 0;
     st.minimum_angle = CGAL_PI; st.maximum_angle = 0;
-    for(Face_index f : t_.faces()) {
-      // circumradius and central angle in double precision (statistics only): sinh^2 h = sinh2 / delta,
-      // sin^2(theta / 2) = a_min delta / (sinh2 nn)
-      const auto& z = t_.lift(f);
+    // corner angles: a cheap proxy per face (the cosine law on the same terms, cos A_i = (2 (s_j + s_k - s_i) +
+    // 4 s_j s_k) / (4 sqrt(s_j (1 + s_j) s_k (1 + s_k))) with s = sinh^2(d / 2) = a / nn, no transcendental
+    // function) selects the faces within 1e-6 of the extreme cosines; only those get the layer's corner_angle
+    // (the proxy's rounding is far below the margin, so the extremes are those of corner_angle on every face)
+    const std::vector<Face_index> fs = t_.faces();
+    std::vector<std::pair<double, double> > cosines(fs.size()); // (largest, smallest) cosine of each face
+    double cmax = -2, cmin = 2, max_sinh2 = 0, min_sin2 = 1;
+    for(std::size_t k = 0; k < fs.size(); ++k) {
+      const auto& z = t_.lift(fs[k]);
       const Triangle_terms<double> tt(z[0].x(), z[0].y(), z[1].x(), z[1].y(), z[2].x(), z[2].y());
       if(!(tt.delta > 0)) { st.minimum_central_angle = 0; st.maximum_circumradius = std::numeric_limits<double>::infinity(); }
       else {
+        // circumradius and central angle in double precision (statistics only): sinh^2 h = sinh2 / delta,
+        // sin^2(theta / 2) = a_min delta / (sinh2 nn)
+        // (both monotone: the extremes of the squared sines, then one transcendental function each)
         const double a_min = (std::min)({tt.a[0], tt.a[1], tt.a[2]});
-        st.maximum_circumradius = (std::max)(st.maximum_circumradius, std::asinh(std::sqrt(tt.sinh2 / tt.delta)));
-        const double s2 = a_min * tt.delta / (tt.nn * tt.sinh2);
-        st.minimum_central_angle = (std::min)(st.minimum_central_angle, 2 * std::asin(std::sqrt((std::min)(1.0, s2))));
+        max_sinh2 = (std::max)(max_sinh2, tt.sinh2 / tt.delta);
+        min_sin2 = (std::min)(min_sin2, a_min * tt.delta / (tt.nn * tt.sinh2));
       }
+      const double sh[3] = {tt.a[0] / tt.nn, tt.a[1] / tt.nn, tt.a[2] / tt.nn};
+      double hi = -2, lo = 2;
+      for(int i = 0; i < 3; ++i) {
+        const double sj = sh[(i + 1) % 3], sk = sh[(i + 2) % 3];
+        const double c = (2 * (sj + sk - sh[i]) + 4 * sj * sk) / (4 * std::sqrt(sj * (1 + sj) * sk * (1 + sk)));
+        hi = (std::max)(hi, c); lo = (std::min)(lo, c);
+      }
+      cosines[k] = {hi, lo};
+      cmax = (std::max)(cmax, hi); cmin = (std::min)(cmin, lo);
+    }
+    if(st.maximum_circumradius == 0) {
+      st.maximum_circumradius = std::asinh(std::sqrt(max_sinh2));
+      st.minimum_central_angle = 2 * std::asin(std::sqrt((std::min)(1.0, min_sin2)));
+    }
+    for(std::size_t k = 0; k < fs.size(); ++k) {
+      if(!(cosines[k].first >= cmax - 1e-6 || cosines[k].second <= cmin + 1e-6)) continue;
+      const Face_index f = fs[k];
       const double l[3] = {t_.edge_length(f, 0), t_.edge_length(f, 1), t_.edge_length(f, 2)};
       for(int i = 0; i < 3; ++i) {
         const double a = Hyperbolic_surface_2::corner_angle(l[(i + 1) % 3], l[i], l[(i + 2) % 3]);
