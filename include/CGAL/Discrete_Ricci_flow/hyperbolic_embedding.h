@@ -250,8 +250,8 @@ public:
 
   /// the conditioning of the relator product: max_k cosh d(0, P_k(0)) over the partial products P_k of
   /// `relator()` in the frame of the deck transformations (the squared norm |alpha|^2 + |beta|^2 of the
-  /// matrices). Rounding errors are amplified by it: the measured `relator_defect()` is about 1e-15 times this
-  /// value (1e-16 to 1e-14 on the demo meshes), and no frame makes it smaller than cosh of the largest
+  /// matrices). Rounding errors are amplified by it: the measured `relator_defect()` is 1e-16 to 3e-13 times
+  /// this value on the demo meshes, and no frame makes it smaller than cosh of the largest
   /// translation length of the partial products.
   double relator_condition() const
   {
