@@ -113,6 +113,33 @@ CGAL_HC_TEST_CASE(disk_geometry_constructions)
   CGAL_HC_CHECK(dist(T.apply_unchecked(g), tg) < 1e-14);
 }
 
+// triangle_chart in double and in long double: the lift reproduces the side lengths (measured with the
+// cosine law of the lifted points in long double, an independent formula), is counterclockwise, has its
+// barycentre at the origin, and the long-double chart is the double one to double precision
+CGAL_HC_TEST_CASE(triangle_chart_in_double_and_long_double)
+{
+  typedef CGAL::Simple_cartesian<long double> LK;
+  typedef HS::Disk_geometry<LK> LG;
+  const long double sides[][3] = {{1.1L, 0.9L, 1.3L}, {7.5L, 7.1L, 0.7L}, {1e-3L, 1.2e-3L, 0.9e-3L}, {12.0L, 11.5L, 3.0L}};
+  for(const auto& l : sides) {
+    const std::array<LK::Point_2, 3> z = LG::triangle_chart(l[0], l[1], l[2]);
+    const std::array<Point_2, 3> zd = G::triangle_chart(double(l[0]), double(l[1]), double(l[2]));
+    auto hdist = [](const LK::Point_2& p, const LK::Point_2& q) { // acosh of the hyperboloid inner product
+      const long double np = p.x() * p.x() + p.y() * p.y(), nq = q.x() * q.x() + q.y() * q.y();
+      const long double d2 = (p.x() - q.x()) * (p.x() - q.x()) + (p.y() - q.y()) * (p.y() - q.y());
+      return std::acosh(1 + 2 * d2 / ((1 - np) * (1 - nq)));
+    };
+    for(int i = 0; i < 3; ++i) {
+      const long double d = hdist(z[i], z[(i + 1) % 3]);
+      CGAL_HC_CHECK_MSG(std::abs(d - l[i]) <= 1e-15L * (1 + l[i]) + (l[i] < 1e-2L ? 1e-12L : 0), "side " << i << ": " << double(d) << " vs " << double(l[i]));
+      CGAL_HC_CHECK(std::abs(double(z[i].x()) - zd[i].x()) + std::abs(double(z[i].y()) - zd[i].y()) < 1e-13);
+    }
+    const LK::Point_2 g = LG::barycenter(z[0], z[1], z[2]);
+    CGAL_HC_CHECK_MSG(std::abs(g.x()) + std::abs(g.y()) < 1e-15L, "barycentre " << double(g.x()) << " " << double(g.y()));
+    CGAL_HC_CHECK((z[1].x() - z[0].x()) * (z[2].y() - z[0].y()) - (z[1].y() - z[0].y()) * (z[2].x() - z[0].x()) > 0);
+  }
+}
+
 // standard_position must not lose the rotation when the second point is nearly opposite (direction near pi):
 // the image of b is on the positive real axis to the last bits, and transitions compose to the identity around
 // a vertex of a fine mesh (the Ricci embedding's holonomies need it)

@@ -10,6 +10,8 @@
 
 #include <CGAL/Discrete_Ricci_flow/compute_metric.h>
 #include <CGAL/Discrete_Ricci_flow/internal/embedding_motions.h>
+#include <CGAL/Discrete_Ricci_flow/internal/embedding_polish.h>
+#include <CGAL/Hyperbolic_surface_2/disk_geometry.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Hyperbolic_surface_2/Homotopy_basis.h>
 #include <CGAL/Hyperbolic_surface_2/Hyperbolic_surface_triangulation.h>
@@ -40,13 +42,24 @@ namespace Discrete_Ricci_flow {
   - the homotopy basis is the layer's `CGAL::Hyperbolic_surface_2::Homotopy_basis` at the base vertex (greedy
     tree-cotree, loops x_1 .. x_2g sorted by length; `basis()`, `homotopy_basis()`): deck transformation i is
     the holonomy of loop i of that class, the same loop as generator i of `Surface_shortest_words`;
+  - the metric in long double: the lengths of `metric` have angle sums 2 pi only up to their rounding (max |K|
+    about 1e-14, `input_max_curvature()`), and the relator amplifies that residual by its condition. A few
+    Newton steps of vertex scaling with the angle sums in long double (systems solved in double) give lengths
+    within about 1e-14 relative of the input whose angle sums are 2 pi to about 1e-18
+    (`polished_max_curvature()`); the charts use them;
   - deck transformations: each loop is developed through the faces it turns around, with the layer's per-face
-    charts (every chart has its face's barycentre at the origin) and transition isometries across the edges,
-    composed in long double (`Poincare_disk_isometry_2` over a long-double kernel); no point is ever laid out
-    far from an origin, so the accuracy does not depend on the size of the surface. The frame is the chart of
-    the face of `halfedge(base)` moved so that the base vertex is at the origin;
+    charts (`Disk_geometry::triangle_chart()`: every chart has its face's barycentre at the origin) and
+    transition isometries across the edges (`Disk_geometry::isometry_from_pairs()`), in long double
+    (`Poincare_disk_isometry_2` over a long-double kernel); no point is ever laid out far from an origin;
+  - the frame: the deck transformations are expressed in the frame of the chart of the face of
+    `halfedge(base)`, moved so that the origin is the point c minimizing the largest cosh d(c, g c) over the
+    generators g and the relator's partial products (a pattern search started at the base vertex): the
+    matrices are then as small as they can be in any frame, which is what limits the accuracy of their
+    products in double. The base vertex's lift is at `base_point()` (the origin only if that is optimal);
+    they are rounded to double once, at the end;
   - the relator: the boundary of the disk cut along the loops, read in the loops (`relator()`); the product of
-    the deck transformations in that order is the identity (`relator_defect()`);
+    the deck transformations in that order is the identity: `relator_defect()` measures it as a user does
+    (double products of the returned matrices), `relator_defect_long_double()` before the rounding;
   - the canonical system a1, b1, ..., ag, bg (relator [a1, b1] ... [ag, bg]) from
     `Homotopy_basis::canonical_change()`: `canonical_deck_transformations()` are the products of the x_i's,
     `canonical_relator_defect()`, `canonical_polygon()`;
@@ -75,6 +88,7 @@ public:
   typedef CGAL::Hyperbolic_surface_2::Homotopy_basis<Mesh> Basis;
   typedef CGAL::Hyperbolic_surface_2::Hyperbolic_surface_triangulation<Mesh, typename Metric::Edge_length_map> Surface;
   typedef CGAL::Hyperbolic_surface_2::Word Word;
+  typedef CGAL::Hyperbolic_surface_2::Disk_geometry<internal::Long_kernel> Long_geometry;
   /// isometries in long double (the side pairings of a large domain have entries beyond double's range of
   /// accurate determinants)
   typedef CGAL::Poincare_disk_isometry_2<CGAL::Simple_cartesian<long double> > Long_isometry;
@@ -101,9 +115,16 @@ public:
       base_(base)
   {
     check_metric(metric);
-    if(hyperbolic_)
+    if(hyperbolic_) {
       surface_ = std::make_shared<const Surface>(metric_.hyperbolic_surface(
         CGAL::Hyperbolic_surface_2::parameters::require_smooth_metric(false)));
+      std::vector<double> l(m_.number_of_edges());
+      for(Edge_index e : m_.edges()) l[e] = metric_.length(e);
+      const internal::Polished_lengths p = internal::polish_hyperbolic_lengths(m_, l);
+      long_length_ = p.length;
+      polish_before_ = double(p.max_curvature_before); polish_after_ = double(p.max_curvature_after);
+      polish_steps_ = p.steps;
+    }
     basis_ = std::make_shared<const Basis>(m_, base_, metric_.edge_length_map());
     root_ = m_.halfedge(base_); // target(root_) == base
     const std::array<internal::Cplx, 3> z = chart(m_.face(root_));
@@ -113,6 +134,7 @@ public:
                          : internal::Motion::euclidean(1, -zb);
     for(const int l : basis_->relator()) relator_.push_back({std::size_t(std::abs(l) - 1), l > 0 ? 1 : -1});
     compute_holonomies();
+    if(hyperbolic_) recentre();
     build_domain_cut();
     layout();
     compute_boundary();
@@ -120,11 +142,10 @@ public:
 
   /*!
     The base vertex, among `number_of_candidates` vertices spread over the index range (vertex 0 first), whose
-    embedding has the smallest `relator_condition()`. The relator defect is about the metric's residual
-    curvature times that condition (the deck transformations are holonomies of a metric whose angle sums are
-    2 pi only up to rounding, and the relator's partial products amplify the error by the distance of the
+    embedding has the smallest `relator_condition()`. The relator defect is about the rounding error times
+    that condition (the relator's partial products amplify the errors by the distance of the
     relator polygon's corners from the origin), and the condition of the greedy relator varies by orders of
-    magnitude with the base vertex (turbine.off: 2e8 to 2e13). Cost: `number_of_candidates` embeddings.
+    magnitude with the base vertex (turbine.off: 1e8 to 6e12). Cost: `number_of_candidates` embeddings.
     \throws the exceptions of the constructor.
   */
   static Vertex_index best_conditioned_base_vertex(const Metric& metric, std::size_t number_of_candidates = 16)
@@ -200,13 +221,38 @@ public:
   /// the product of the deck transformations along `relator()` (the identity up to rounding)
   Isometry relator_product() const { return internal::to_double(product(relator_word()).h); }
 
-  /// distance of the relator product to the identity (max entry difference of the normalized matrix, up to
-  /// sign; for the torus |rotation - 1| + |translation|), computed in long double
-  double relator_defect() const { return double(product(relator_word()).defect()); }
+  /// distance of the relator product to the identity as a user measures it: the product of the returned
+  /// `deck_transformations()` (double) in the order of `relator()`, multiplied in double, normalized, and the
+  /// largest entry difference to the identity matrix up to sign (`Poincare_disk_isometry_2::distance_to`);
+  /// +infinity if the product has a non-positive determinant. For the torus |rotation - 1| + |translation|
+  /// of the product of the periods' translations (long double).
+  double relator_defect() const
+  {
+    if(!hyperbolic_) return double(product(relator_word()).defect());
+    std::vector<Isometry> d;
+    try { d = deck_transformations(); } catch(const CGAL::Numerical_error&) { return std::numeric_limits<double>::infinity(); }
+    Isometry m;
+    for(const int l : relator_word()) m = m * (l > 0 ? d[l - 1] : d[-l - 1].inverse());
+    const double det = CGAL::to_double(m.determinant());
+    if(!(det > 0) || !std::isfinite(det)) return std::numeric_limits<double>::infinity();
+    return m.distance_to(Isometry());
+  }
+
+  /// the same distance for the product of the long-double holonomies, multiplied in long double (what the
+  /// embedding's own computation achieves before the rounding of the deck transformations to double)
+  double relator_defect_long_double() const { return double(product(relator_word()).defect()); }
+
+  /// max |2 pi - angle sum| of the metric as given and after the long-double polish of the lengths that the
+  /// charts use (hyperbolic background; see the class description), and the number of polish steps
+  double input_max_curvature() const { return polish_before_; }
+  double polished_max_curvature() const { return polish_after_; }
+  int polish_steps() const { return polish_steps_; }
 
   /// the conditioning of the relator product: max_k cosh d(0, P_k(0)) over the partial products P_k of
-  /// `relator()` (about the squared norm of the matrices). Rounding errors of the deck transformations are
-  /// amplified by it: `relator_defect()` is at least about 1e-16 times this value, whatever the method.
+  /// `relator()` in the frame of the deck transformations (the squared norm |alpha|^2 + |beta|^2 of the
+  /// matrices). Rounding errors are amplified by it: the measured `relator_defect()` is 1e-16 to 3e-13 times
+  /// this value on the demo meshes, and no frame makes it smaller than cosh of the largest
+  /// translation length of the partial products.
   double relator_condition() const
   {
     double c = 1;
@@ -222,9 +268,12 @@ public:
     return c;
   }
 
-  /// The relator polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (0), k = 0 .. 4g-1, for the letters
-  /// w_k of `relator()` (the base vertex's copy is at the origin).
+  /// The relator polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (b), k = 0 .. 4g-1, for the letters
+  /// w_k of `relator()` and the base vertex's lift b = `base_point()`.
   std::vector<Complex> relator_polygon() const { return polygon(relator_word()); }
+
+  /// the lift of the base vertex in the frame of the deck transformations (see the class description)
+  Complex base_point() const { return Complex(double(base_point_.real()), double(base_point_.imag())); }
 
   /// the canonical generators a1, b1, ..., ag, bg as words in the loops (`Homotopy_basis::canonical_change()`)
   const std::vector<Word>& canonical_words() const { return basis_->canonical_change().new_in_old; }
@@ -237,15 +286,15 @@ public:
   }
   /// the defect of [a1, b1] ... [ag, bg] evaluated on `canonical_deck_transformations()`
   double canonical_relator_defect() const { return double(canonical_product().defect()); }
-  /// the canonical fundamental polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (0) along
-  /// a1 b1 a1^-1 b1^-1 ...
+  /// the canonical fundamental polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (b) along
+  /// a1 b1 a1^-1 b1^-1 ..., b = `base_point()`
   std::vector<Complex> canonical_polygon() const
   {
     std::vector<Complex> p;
     internal::Motion m = internal::Motion::identity(hyperbolic_);
     const std::vector<internal::Motion> c = canonical_motions();
     for(const int l : canonical_relator()) {
-      const internal::Cplx z = m(internal::Cplx(0));
+      const internal::Cplx z = m(base_point_);
       p.push_back(Complex(double(z.real()), double(z.imag())));
       m = m * (l > 0 ? c[l - 1] : c[-l - 1].inverse());
     }
@@ -384,10 +433,12 @@ private:
   // the chart of f: z[i] is the position of source(h_i), h_0 = halfedge(f), h_{i+1} = next(h_i)
   std::array<internal::Cplx, 3> chart(Face_index f) const
   {
-    if(hyperbolic_) {
-      const typename Surface::Face_chart c = surface_->chart(f);
+    if(hyperbolic_) { // the layer's chart construction, in long double on the polished lengths
+      const Halfedge_index h = m_.halfedge(f);
+      const std::array<internal::Long_kernel::Point_2, 3> c = Long_geometry::triangle_chart(
+        long_length_[m_.edge(h)], long_length_[m_.edge(m_.next(h))], long_length_[m_.edge(m_.prev(h))]);
       std::array<internal::Cplx, 3> z;
-      for(int i = 0; i < 3; ++i) z[i] = internal::Cplx(c.z[i].x(), c.z[i].y());
+      for(int i = 0; i < 3; ++i) z[i] = internal::Cplx(c[i].x(), c[i].y());
       return z;
     }
     const Halfedge_index h = m_.halfedge(f);
@@ -397,10 +448,13 @@ private:
   // maps the chart of face(h) to the chart of face(opposite(h))
   internal::Motion transition(Halfedge_index h) const
   {
-    if(hyperbolic_) return internal::Motion::from(internal::to_long(surface_->transition(h)));
     const Halfedge_index o = m_.opposite(h);
     const std::array<internal::Cplx, 3> cf = chart(m_.face(h)), cg = chart(m_.face(o));
     const int ih = index_in_face(h), io = index_in_face(o);
+    if(hyperbolic_) { // the layer's transition (Surface::transition) in long double
+      auto P = [](const internal::Cplx& z) { return internal::Long_kernel::Point_2(z.real(), z.imag()); };
+      return internal::Motion::from(Long_geometry::isometry_from_pairs(P(cf[ih]), P(cf[(ih + 1) % 3]), P(cg[(io + 1) % 3]), P(cg[io])));
+    }
     // source(h) = target(o), target(h) = source(o)
     return internal::euclidean_from_pairs(cf[ih], cf[(ih + 1) % 3], cg[(io + 1) % 3], cg[io]);
   }
@@ -443,6 +497,60 @@ private:
     for(std::size_t i = 0; i < number_of_generators(); ++i) hol_.push_back(develop(basis_->loop(i)));
   }
 
+  // The frame of the deck transformations: the origin is moved to the point c that minimizes
+  //   F(c) = max over the generators g_i and the relator's partial products P_k of cosh d(c, g c)
+  // (the squared norm of the matrix in the frame centred at c, which bounds the amplification of rounding
+  // errors when the matrices are multiplied: see relator_condition()), by a pattern search from the base
+  // vertex (step halved from 4 down to 1e-3 in hyperbolic distance, at most 2000 evaluations). The holonomies
+  // and the frame are conjugated by the translation T taking c to the origin; the base vertex's lift is then
+  // at T(0) (`base_point()`).
+  internal::Real frame_cost(const std::vector<internal::Motion>& elements, const internal::Cplx& c) const
+  {
+    const internal::Motion T = internal::Motion::from(
+      internal::Long_isometry::translation_to_origin(internal::Long_kernel::Point_2(c.real(), c.imag())));
+    const internal::Motion Ti = T.inverse();
+    internal::Real worst = 1;
+    for(const internal::Motion& g : elements) {
+      const Long_isometry n = (T * g * Ti).h.normalized();
+      const internal::Real q = n.alpha_real() * n.alpha_real() + n.alpha_imag() * n.alpha_imag() +
+                               n.beta_real() * n.beta_real() + n.beta_imag() * n.beta_imag();
+      if(!std::isfinite(q)) return std::numeric_limits<internal::Real>::infinity();
+      worst = (std::max)(worst, q);
+    }
+    return worst;
+  }
+
+  void recentre()
+  {
+    std::vector<internal::Motion> elements(hol_.begin(), hol_.end());
+    internal::Motion m = internal::Motion::identity(true);
+    for(const int l : relator_word()) { m = (m * letter(l)).normalized(); elements.push_back(m); }
+    internal::Cplx c(0);
+    internal::Real best = frame_cost(elements, c);
+    int evaluations = 0;
+    for(internal::Real step = 4; step > internal::Real(1e-3) && evaluations < 2000; ) {
+      bool moved = false;
+      // the 8 points at hyperbolic distance `step` from c
+      const internal::Motion from_c = internal::Motion::from(
+        internal::Long_isometry::translation_from_origin(internal::Long_kernel::Point_2(c.real(), c.imag())));
+      for(int k = 0; k < 8 && evaluations < 2000; ++k) {
+        const internal::Real t = std::tanh(step / 2), phi = k * std::acos(internal::Real(-1)) / 4;
+        const internal::Cplx q = from_c(internal::Cplx(t * std::cos(phi), t * std::sin(phi)));
+        if(!(std::abs(q) < 1)) continue;
+        const internal::Real f = frame_cost(elements, q);
+        ++evaluations;
+        if(f < best) { best = f; c = q; moved = true; break; }
+      }
+      if(!moved) step /= 2;
+    }
+    if(c == internal::Cplx(0)) return;
+    const internal::Motion T = internal::Motion::from(
+      internal::Long_isometry::translation_to_origin(internal::Long_kernel::Point_2(c.real(), c.imag())));
+    for(internal::Motion& h : hol_) h = (T * h * T.inverse()).normalized();
+    frame_ = T * frame_;
+    base_point_ = T(internal::Cplx(0));
+  }
+
   Word relator_word() const { return basis_->relator(); }
   internal::Motion letter(int l) const { return l > 0 ? hol_[l - 1] : hol_[-l - 1].inverse(); }
   internal::Motion product(const Word& w) const
@@ -457,7 +565,7 @@ private:
     std::vector<Complex> p;
     internal::Motion m = internal::Motion::identity(hyperbolic_);
     for(const int l : w) {
-      const internal::Cplx z = m(internal::Cplx(0));
+      const internal::Cplx z = m(base_point_);
       p.push_back(Complex(double(z.real()), double(z.imag())));
       m = m * letter(l);
     }
@@ -644,9 +752,13 @@ private:
   Vertex_index base_;
   bool hyperbolic_ = true;
   std::shared_ptr<const Surface> surface_;
+  std::vector<internal::Real> long_length_;
+  double polish_before_ = 0, polish_after_ = 0;
+  int polish_steps_ = 0;
   std::shared_ptr<const Basis> basis_;
   Halfedge_index root_;
   internal::Motion frame_;
+  internal::Cplx base_point_ = internal::Cplx(0);
   std::vector<char> cut_;
   std::vector<internal::Cplx> pos_;
   std::vector<internal::Motion> place_, hol_, pairings_;

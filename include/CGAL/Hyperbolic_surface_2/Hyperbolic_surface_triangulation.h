@@ -170,11 +170,7 @@ public:
     Face_chart c;
     c.face = f;
     c.h[0] = halfedge(f, tm_); c.h[1] = next(c.h[0], tm_); c.h[2] = next(c.h[1], tm_);
-    const double l0 = length(c.h[0]), l1 = length(c.h[1]), l2 = length(c.h[2]);
-    const Point_2 a(0, 0), b = Geometry::point_on_real_axis(l0);
-    const Point_2 cc = Geometry::apex(a, b, l1, l2, l0);
-    const Isometry_2 t = Isometry_2::translation_to_origin(Geometry::barycenter(a, b, cc));
-    c.z[0] = t.apply_unchecked(a); c.z[1] = t.apply_unchecked(b); c.z[2] = t.apply_unchecked(cc);
+    c.z = Geometry::triangle_chart(length(c.h[0]), length(c.h[1]), length(c.h[2]));
     return c;
   }
 

@@ -11,6 +11,7 @@
 #include <CGAL/Hyperbolic_surface_2/hyperbolic_triangle.h>
 #include <CGAL/Poincare_disk_isometry_2.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -94,6 +95,18 @@ struct Disk_geometry
     const FT alpha = corner_angle(a, b, c);
     const FT r = tanh(b / 2);
     return standard_position(A, B).inverse().apply_unchecked(Point_2(r * cos(alpha), r * sin(alpha)));
+  }
+
+  /// The lift of a triangle with side lengths `l0` = |z0 z1|, `l1` = |z1 z2|, `l2` = |z2 z0|: z0, z1, z2
+  /// counterclockwise, barycentre (`barycenter()`) at the origin (the chart of a face,
+  /// `Hyperbolic_surface_triangulation::chart()`). In the precision of `FT` (e.g. long double lengths with a
+  /// long-double kernel). Cost: O(1).
+  static std::array<Point_2, 3> triangle_chart(FT l0, FT l1, FT l2)
+  {
+    const Point_2 a(0, 0), b = point_on_real_axis(l0);
+    const Point_2 c = apex(a, b, l1, l2, l0);
+    const Isometry_2 t = Isometry_2::translation_to_origin(barycenter(a, b, c));
+    return {{t.apply_unchecked(a), t.apply_unchecked(b), t.apply_unchecked(c)}};
   }
 
   /// Klein image 2z / (1 + |z|^2) (geodesics are straight lines there)

@@ -7,6 +7,7 @@
 #ifndef CGAL_DISCRETE_RICCI_FLOW_INTERNAL_EMBEDDING_MOTIONS_H
 #define CGAL_DISCRETE_RICCI_FLOW_INTERNAL_EMBEDDING_MOTIONS_H
 
+#include <CGAL/Hyperbolic_geometry_errors.h>
 #include <CGAL/Poincare_disk_isometry_2.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <string>
 
 namespace CGAL {
 namespace Discrete_Ricci_flow {
@@ -30,11 +32,17 @@ inline Long_isometry to_long(const CGAL::Poincare_disk_isometry_2<CGAL::Epick>& 
   return Long_isometry(g.alpha_real(), g.alpha_imag(), g.beta_real(), g.beta_imag());
 }
 
+/// the normalized isometry rounded to double; throws `CGAL::Numerical_error` when the rounded matrix has no
+/// positive determinant (|alpha|^2 above about 1e16: the isometry moves the origin by more than about 37)
 inline CGAL::Poincare_disk_isometry_2<CGAL::Epick> to_double(const Long_isometry& g)
 {
   const Long_isometry n = g.normalized();
-  return CGAL::Poincare_disk_isometry_2<CGAL::Epick>(double(n.alpha_real()), double(n.alpha_imag()),
-                                                     double(n.beta_real()), double(n.beta_imag()));
+  const double ar = double(n.alpha_real()), ai = double(n.alpha_imag()), br = double(n.beta_real()), bi = double(n.beta_imag());
+  if(!(ar * ar + ai * ai - br * br - bi * bi > 0))
+    throw CGAL::Numerical_error("Hyperbolic_embedding: a deck transformation is not representable in double "
+                                "(|alpha|^2 = " + std::to_string(double(n.alpha_real() * n.alpha_real() + n.alpha_imag() * n.alpha_imag())) +
+                                ": it moves every point of the frame's chart too far)");
+  return CGAL::Poincare_disk_isometry_2<CGAL::Epick>(ar, ai, br, bi);
 }
 
 /// a motion of the model plane: a hyperbolic isometry of the Poincare disk, or a Euclidean motion z -> a z + b
