@@ -23,6 +23,7 @@ CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_edge_length_map_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_geometric_initial_flips_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_sparse_solver_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_puncture_vertex_t)
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ricci_reuse_factorization_t)
 
 namespace CGAL {
 namespace Discrete_Ricci_flow {
@@ -141,12 +142,17 @@ struct Flow_statistics
   double time_seconds = 0;                   ///< wall-clock time of the flow
   std::size_t number_of_flips = 0;           ///< Ptolemy (intrinsic Delaunay) flips during the flow
   std::size_t number_of_initial_flips = 0;   ///< geometric flips of the input (`geometric_initial_flips`)
-  std::size_t number_of_symbolic_factorizations = 0; ///< Eigen analyzePattern calls (pattern changes)
-  std::size_t number_of_factorizations = 0;  ///< Eigen numeric factorizations (one per Newton iteration)
+  std::size_t number_of_symbolic_factorizations = 0; ///< symbolic analyses (after pattern changes)
+  std::size_t number_of_factorizations = 0;  ///< numeric factorizations (at most one per Newton iteration)
   double factorization_seconds = 0;          ///< time spent in analyzePattern + factorize + solve
   double first_factorization_seconds = 0;    ///< time of the first analyzePattern + factorize + solve
   Sparse_solver solver_used = Sparse_solver::SIMPLICIAL_LDLT; ///< the solver of the last Newton system
   std::size_t number_of_solver_fallbacks = 0; ///< iterations that fell back to SimplicialLDLT (indefinite)
+  /// conjugate-gradient iterations on Newton systems preconditioned by an earlier factorization (each costs
+  /// one solve with the factor and one product with the Hessian)
+  std::size_t number_of_cg_iterations = 0;
+  double cg_seconds = 0;                     ///< time spent in those conjugate gradients
+  double hessian_seconds = 0;                ///< time spent assembling the Hessians
   /// Newton steps taken after the requested accuracy was reached (default accuracy: until the error stops
   /// halving, see `compute_metric()`)
   int polishing_iterations = 0;
@@ -173,6 +179,11 @@ CGAL_HYPERBOLIC_NAMED_PARAMETER(input_edge_length_map, ricci_edge_length_map_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER(geometric_initial_flips, ricci_geometric_initial_flips_t)
 /// named parameter `sparse_solver(Sparse_solver s [, np])` (default `Sparse_solver::DEFAULT`)
 CGAL_HYPERBOLIC_NAMED_PARAMETER(sparse_solver, ricci_sparse_solver_t)
+/// named parameter `reuse_factorization(bool [, np])` (default true): solve the Newton systems by conjugate
+/// gradients preconditioned with the Cholesky factorization of an earlier Newton step, factorizing again only
+/// when they do not reach the inexact-Newton tolerance within a budget of a fraction of a factorization's
+/// cost (see `compute_metric()`); false: one factorization per Newton step. The convergence test is the same.
+CGAL_HYPERBOLIC_NAMED_PARAMETER(reuse_factorization, ricci_reuse_factorization_t)
 /// named parameter `puncture_vertex(std::size_t i [, np])`: the vertex (index in `vertices(tm)`) sent to the
 /// north pole by `spherical_uniformization()` (default: a vertex of largest degree)
 CGAL_HYPERBOLIC_NAMED_PARAMETER(puncture_vertex, ricci_puncture_vertex_t)

@@ -182,7 +182,9 @@ public:
   bool make_delaunay()
   {
     if(!use_flips) return true;
-    for(E e : m.edges()) push(e);
+    // only the edges that are not Delaunay start in the queue (queueing all edges would keep a queue of the
+    // size of the mesh alive)
+    for(E e : m.edges()) if(!is_delaunay(e)) push(e);
     while(!flip_queue.empty()) {
       const E e = flip_queue.back(); flip_queue.pop_back(); in_queue[e] = 0;
       if(is_delaunay(e)) continue;
@@ -228,6 +230,89 @@ public:
     return a;
   }
 
+  // the 3 x 3 block d K_{cs[i]} / d u_{cs[a]} of face f (from the cached angles); false for a degenerate face
+  // (extended angles pi, 0, 0), which contributes nothing
+  bool face_hessian(F f, H hs[3], V cs[3], double d[3][3]) const
+  {
+    double l[3], th[3], dth[3][3];
+    face_data(m.halfedge(f), hs, cs, l);
+    for(int i = 0; i < 3; ++i) {
+      th[i] = angle[hs[i]];
+      if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3])) return false;
+    }
+    // dl[j][a]: d l_j / d u at corner a (source(h_j) = corner j+1, target(h_j) = corner j+2)
+    double dl[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    if(scheme == Scheme::VERTEX_SCALING) {
+      // g(l) = sinh l (sin l) and d l / d u = tanh(l / 2) (tan(l / 2)) from one sinh (sin) of l / 2
+      double g[3];
+      for(int j = 0; j < 3; ++j) {
+        double d = 0.5 * l[j];
+        if(geo == Background_geometry::EUCLIDEAN) g[j] = l[j];
+        else if(geo == Background_geometry::HYPERBOLIC) {
+          const double sh = std::sinh(0.5 * l[j]), ch = std::sqrt(1 + sh * sh);
+          g[j] = 2 * sh * ch; d = sh / ch;
+        } else {
+          const double sn = std::sin(0.5 * l[j]), cs = std::cos(0.5 * l[j]);
+          g[j] = 2 * sn * cs; d = l[j] < CGAL_PI ? sn / cs : 0.0;
+        }
+        dl[j][(j + 1) % 3] = dl[j][(j + 2) % 3] = d;
+      }
+      // d theta_i / d l_j as in triangle_angle_derivatives(), with these g
+      double c[3];
+      for(int i = 0; i < 3; ++i) c[i] = std::cos(th[i]);
+      for(int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        const double A = g[j] * g[k] * std::sin(th[i]);
+        if(!(A > 0)) { dth[i][0] = dth[i][1] = dth[i][2] = 0; continue; }
+        const double gi = g[i] / A;
+        dth[i][i] = gi; dth[i][j] = -gi * c[k]; dth[i][k] = -gi * c[j];
+      }
+    } else {
+      triangle_angle_derivatives(geo, l, th, dth);
+      for(int j = 0; j < 3; ++j) {
+        double ds, dt;
+        length_derivatives(hs[j], ds, dt);
+        dl[j][(j + 1) % 3] = ds;
+        dl[j][(j + 2) % 3] = dt;
+      }
+    }
+    for(int i = 0; i < 3; ++i)
+      for(int a = 0; a < 3; ++a) {
+        double s = 0;
+        for(int j = 0; j < 3; ++j) s += dth[i][j] * dl[j][a];
+        d[i][a] = -s;
+      }
+    return true;
+  }
+
+  // The lower triangle of dK/du as a compressed column-major matrix whose sparsity pattern depends only on the
+  // connectivity (one entry per vertex and per pair of adjacent vertices, degenerate faces give explicit zeros):
+  // the pattern and the position of each edge's entry are rebuilt only when `pattern_version` changes, the
+  // values are accumulated in place (no triplets). Rows and columns of `fixed` vertices (if not empty) are
+  // replaced by the identity. Equals the lower triangle of the matrix of `hessian_triplets()` (the solvers read
+  // only that triangle).
+  void hessian_lower(Eigen::SparseMatrix<double>& Hm, const std::vector<char>& fixed)
+  {
+    const int n = int(m.number_of_vertices());
+    if(hessian_pattern_version_ != pattern_version || Hm.rows() != n || !Hm.isCompressed()) build_hessian_pattern(Hm);
+    double* val = Hm.valuePtr();
+    std::fill(val, val + Hm.nonZeros(), 0.0);
+    const bool has_fixed = !fixed.empty();
+    for(F f : m.faces()) {
+      H hs[3]; V cs[3]; double d[3][3];
+      if(!face_hessian(f, hs, cs, d)) continue;
+      for(int i = 0; i < 3; ++i) {
+        if(has_fixed && fixed[cs[i]]) continue;
+        for(int a = 0; a < 3; ++a) {
+          if(has_fixed && fixed[cs[a]]) continue;
+          if(a == i || cs[i] == cs[a]) val[diagonal_position_[cs[i]]] += d[i][a];
+          else if(cs[i] > cs[a]) val[edge_position_[m.edge(hs[3 - i - a])]] += d[i][a]; // edge joining corners i, a
+        }
+      }
+    }
+    if(has_fixed) for(int v = 0; v < n; ++v) if(fixed[v]) val[diagonal_position_[v]] = 1.0;
+  }
+
   // triplets of dK/du (symmetric positive semi-definite for E^2 / H^2 vertex scaling); needs the cached
   // angles (compute_angles())
   void hessian_triplets(std::vector<Eigen::Triplet<double> >& t) const
@@ -260,6 +345,55 @@ public:
         }
     }
   }
+
+private:
+  // the lower-triangular pattern of the Hessian for the current connectivity, and the entry of each edge
+  void build_hessian_pattern(Eigen::SparseMatrix<double>& Hm)
+  {
+    const int n = int(m.number_of_vertices());
+    std::vector<int> colptr(n + 1, 0);
+    for(int v = 0; v < n; ++v) colptr[v + 1] = 1;
+    for(E e : m.edges()) {
+      const int a = int(m.vertex(e, 0)), b = int(m.vertex(e, 1));
+      if(a != b) ++colptr[(std::min)(a, b) + 1];
+    }
+    for(int v = 0; v < n; ++v) colptr[v + 1] += colptr[v];
+    std::vector<int> rows(colptr[n]), fill(colptr.begin(), colptr.end() - 1);
+    for(int v = 0; v < n; ++v) rows[fill[v]++] = v;
+    for(E e : m.edges()) {
+      const int a = int(m.vertex(e, 0)), b = int(m.vertex(e, 1));
+      if(a != b) rows[fill[(std::min)(a, b)]++] = (std::max)(a, b);
+    }
+    // sort each column and remove the repeated rows of multi-edges
+    std::vector<int> start(n + 1, 0);
+    int out = 0;
+    for(int v = 0; v < n; ++v) {
+      std::sort(rows.begin() + colptr[v], rows.begin() + colptr[v + 1]);
+      start[v] = out;
+      for(int k = colptr[v]; k < colptr[v + 1]; ++k)
+        if(k == colptr[v] || rows[k] != rows[k - 1]) rows[out++] = rows[k];
+    }
+    start[n] = out;
+    rows.resize(out);
+    Hm.resize(n, n);
+    Hm.resizeNonZeros(out);
+    std::copy(start.begin(), start.end(), Hm.outerIndexPtr());
+    std::copy(rows.begin(), rows.end(), Hm.innerIndexPtr());
+    std::fill(Hm.valuePtr(), Hm.valuePtr() + out, 0.0);
+    diagonal_position_.assign(n, 0);
+    for(int v = 0; v < n; ++v) diagonal_position_[v] = start[v]; // the diagonal is the first row of its column
+    edge_position_.assign(m.number_of_edges(), -1);
+    for(E e : m.edges()) {
+      const int a = int(m.vertex(e, 0)), b = int(m.vertex(e, 1));
+      if(a == b) continue;
+      const int c = (std::min)(a, b), r = (std::max)(a, b);
+      edge_position_[e] = int(std::lower_bound(rows.begin() + start[c], rows.begin() + start[c + 1], r) - rows.begin());
+    }
+    hessian_pattern_version_ = pattern_version;
+  }
+
+  int hessian_pattern_version_ = -1;
+  std::vector<int> diagonal_position_, edge_position_;
 };
 
 } // namespace internal

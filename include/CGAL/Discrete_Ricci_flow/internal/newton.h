@@ -13,7 +13,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_HC_HAS_CHOLMOD
-#include <Eigen/CholmodSupport>
+#include <cholmod.h>
 #endif
 
 #include <algorithm>
@@ -31,8 +31,11 @@ namespace internal {
 
 typedef Eigen::SparseMatrix<double> Sparse_matrix;
 
-/// Factorizes and solves H x = b with the chosen solver, reusing the symbolic analysis while the pattern
-/// version does not change. CHOLMOD's LLT fails on an indefinite matrix: the call then falls back to LDLT.
+/// The sparse Cholesky factorization of a symmetric matrix given by its lower triangle (compressed column
+/// storage), with the chosen solver. The symbolic analysis is redone only when the pattern version changes;
+/// CHOLMOD keeps the fill-reducing ordering of its first analysis for later patterns (Ptolemy flips change a
+/// few entries: the ordering stays good, and the nested-dissection ordering of large meshes is expensive).
+/// CHOLMOD's LLT fails on an indefinite matrix: the factorization then falls back to LDLT.
 class Sparse_cholesky
 {
 public:
@@ -41,50 +44,151 @@ public:
     kind_ = s == Sparse_solver::DEFAULT ? (has_cholmod() ? Sparse_solver::SUPERNODAL_CHOLMOD : Sparse_solver::SIMPLICIAL_LDLT) : s;
     if(kind_ == Sparse_solver::SUPERNODAL_CHOLMOD && !has_cholmod())
       throw_option_error("sparse_solver(SUPERNODAL_CHOLMOD): the library was configured without CHOLMOD");
-  }
-
-  /// true on success; `used` receives the solver that produced x
-  bool solve(const Sparse_matrix& H, int pattern_version, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-             Flow_statistics& st)
-  {
 #ifdef CGAL_HC_HAS_CHOLMOD
     if(kind_ == Sparse_solver::SUPERNODAL_CHOLMOD) {
-      if(!cholmod_) {
-        cholmod_.reset(new Eigen::CholmodSupernodalLLT<Sparse_matrix>());
-        cholmod_->cholmod().print = 0;               // an indefinite matrix is not an error here: LDLT takes over
-        cholmod_->cholmod().error_handler = nullptr;
-      }
-      if(cholmod_version_ != pattern_version) {
-        cholmod_->analyzePattern(H); cholmod_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
-      }
-      cholmod_->factorize(H);
-      ++st.number_of_factorizations;
-      if(cholmod_->info() == Eigen::Success) {
-        x = cholmod_->solve(b);
-        if(cholmod_->info() == Eigen::Success && x.allFinite()) { st.solver_used = kind_; return true; }
-      }
+      cholmod_start(&cm_);
+      cm_.print = 0;               // an indefinite matrix is not an error here: LDLT takes over
+      cm_.error_handler = nullptr;
+      cm_.supernodal = CHOLMOD_SUPERNODAL;
+      cm_.final_ll = 1;            // keep L L^T (the supernodal form)
+      started_ = true;
+    }
+#endif
+  }
+  Sparse_cholesky(const Sparse_cholesky&) = delete;
+  Sparse_cholesky& operator=(const Sparse_cholesky&) = delete;
+  ~Sparse_cholesky()
+  {
+#ifdef CGAL_HC_HAS_CHOLMOD
+    if(started_) {
+      free_cholmod_factor();
+      if(x_) cholmod_free_dense(&x_, &cm_);
+      if(y_) cholmod_free_dense(&y_, &cm_);
+      if(e_) cholmod_free_dense(&e_, &cm_);
+      cholmod_finish(&cm_);
+    }
+#endif
+  }
+
+  Sparse_solver kind() const { return kind_; }
+  /// the solver of the last successful factorization
+  Sparse_solver used() const { return used_; }
+  bool has_factor() const { return has_factor_; }
+  /// true if the last factorization is positive definite (it can precondition conjugate gradients)
+  bool positive_definite() const { return has_factor_ && positive_definite_; }
+  /// estimated cost of one factorization in units of one solve with the factor (floating-point operations
+  /// of the factorization over those of a forward and backward substitution)
+  double factorization_over_solve() const { return factorization_over_solve_; }
+  /// wall-clock time of the last numeric factorization (without the symbolic analysis)
+  double numeric_seconds() const { return numeric_seconds_; }
+
+  /// numeric factorization of the matrix whose lower triangle is `H` (compressed); false on failure
+  bool factorize(const Sparse_matrix& H, int pattern_version, Flow_statistics& st)
+  {
+    has_factor_ = false;
+#ifdef CGAL_HC_HAS_CHOLMOD
+    if(kind_ == Sparse_solver::SUPERNODAL_CHOLMOD) {
+      if(cholmod_factorize_(H, pattern_version, st)) return true;
       ++st.number_of_solver_fallbacks;
+      free_cholmod_factor(); // do not keep two factorizations alive
     }
 #endif
     if(ldlt_version_ != pattern_version) {
       ldlt_.analyzePattern(H); ldlt_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
     }
+    const auto t0 = std::chrono::steady_clock::now();
     ldlt_.factorize(H);
+    numeric_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ++st.number_of_factorizations;
-    st.solver_used = Sparse_solver::SIMPLICIAL_LDLT;
     if(ldlt_.info() != Eigen::Success) return false;
-    x = ldlt_.solve(b);
+    used_ = Sparse_solver::SIMPLICIAL_LDLT;
+    const Eigen::VectorXd D = ldlt_.vectorD();
+    positive_definite_ = D.size() == 0 || D.minCoeff() > 0;
+    double fl = 0, lnz = 0;
+    for(Eigen::Index j = 0; j < ldlt_.matrixL().nestedExpression().outerSize(); ++j) {
+      const double c = double(ldlt_.matrixL().nestedExpression().outerIndexPtr()[j + 1] -
+                              ldlt_.matrixL().nestedExpression().outerIndexPtr()[j]);
+      fl += c * c; lnz += c;
+    }
+    factorization_over_solve_ = fl / (4 * lnz + 4 * double(H.rows()) + 1);
+    has_factor_ = true;
+    return true;
+  }
+
+  /// x := A^{-1} x with the last factorization; false if the result is not finite
+  bool solve_in_place(Eigen::VectorXd& x)
+  {
+    if(!has_factor_) return false;
+#ifdef CGAL_HC_HAS_CHOLMOD
+    if(used_ == Sparse_solver::SUPERNODAL_CHOLMOD) {
+      cholmod_dense b;
+      b.nrow = std::size_t(x.size()); b.ncol = 1; b.nzmax = b.nrow; b.d = b.nrow; b.x = x.data(); b.z = nullptr;
+      b.xtype = CHOLMOD_REAL; b.dtype = CHOLMOD_DOUBLE;
+      if(!cholmod_solve2(CHOLMOD_A, L_, &b, nullptr, &x_, nullptr, &y_, &e_, &cm_) || !x_) return false;
+      std::copy(static_cast<const double*>(x_->x), static_cast<const double*>(x_->x) + x.size(), x.data());
+      return x.allFinite();
+    }
+#endif
+    x = ldlt_.solve(x);
     return x.allFinite();
   }
 
+  /// factorizes and solves H x = b; true on success (kept for the benchmark's reference measurement)
+  bool solve(const Sparse_matrix& H, int pattern_version, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+             Flow_statistics& st)
+  {
+    if(!factorize(H, pattern_version, st)) return false;
+    x = b;
+    st.solver_used = used_;
+    return solve_in_place(x);
+  }
+
 private:
-  Sparse_solver kind_;
-  Eigen::SimplicialLDLT<Sparse_matrix> ldlt_;
-  int ldlt_version_ = -1;
 #ifdef CGAL_HC_HAS_CHOLMOD
-  std::unique_ptr<Eigen::CholmodSupernodalLLT<Sparse_matrix> > cholmod_;
+  bool cholmod_factorize_(const Sparse_matrix& H, int pattern_version, Flow_statistics& st)
+  {
+    cholmod_sparse A;
+    A.nrow = std::size_t(H.rows()); A.ncol = std::size_t(H.cols()); A.nzmax = std::size_t(H.nonZeros());
+    A.p = const_cast<int*>(H.outerIndexPtr()); A.i = const_cast<int*>(H.innerIndexPtr()); A.nz = nullptr;
+    A.x = const_cast<double*>(H.valuePtr()); A.z = nullptr;
+    A.stype = -1; A.itype = CHOLMOD_INT; A.xtype = CHOLMOD_REAL; A.dtype = CHOLMOD_DOUBLE; A.sorted = 1; A.packed = 1;
+    if(!L_ || cholmod_version_ != pattern_version) {
+      std::vector<int> perm;
+      if(L_ && L_->Perm && L_->n == A.nrow) { // reuse the ordering of the first analysis
+        perm.assign(static_cast<const int*>(L_->Perm), static_cast<const int*>(L_->Perm) + L_->n);
+        cm_.nmethods = 1; cm_.method[0].ordering = CHOLMOD_GIVEN;
+      } else
+        cm_.nmethods = 0; // CHOLMOD's default: AMD, and METIS when AMD's fill is poor (large meshes)
+      free_cholmod_factor();
+      L_ = cholmod_analyze_p(&A, perm.empty() ? nullptr : perm.data(), nullptr, 0, &cm_);
+      cholmod_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
+      if(!L_ || cm_.status < CHOLMOD_OK) return false;
+      factorization_over_solve_ = cm_.fl / (4 * cm_.lnz + 4 * double(A.nrow) + 1);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    cholmod_factorize(&A, L_, &cm_);
+    numeric_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ++st.number_of_factorizations;
+    if(cm_.status != CHOLMOD_OK || L_->minor < L_->n) return false;
+    used_ = Sparse_solver::SUPERNODAL_CHOLMOD; positive_definite_ = true; has_factor_ = true;
+    return true;
+  }
+  void free_cholmod_factor()
+  {
+    if(L_) cholmod_free_factor(&L_, &cm_);
+    L_ = nullptr; cholmod_version_ = -1;
+  }
+  cholmod_common cm_;
+  cholmod_factor* L_ = nullptr;
+  cholmod_dense *x_ = nullptr, *y_ = nullptr, *e_ = nullptr;
   int cholmod_version_ = -1;
+  bool started_ = false;
 #endif
+  Sparse_solver kind_, used_ = Sparse_solver::SIMPLICIAL_LDLT;
+  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> ldlt_;
+  int ldlt_version_ = -1;
+  bool has_factor_ = false, positive_definite_ = false;
+  double factorization_over_solve_ = 1, numeric_seconds_ = 0;
 };
 
 /// the options of a Newton run
@@ -103,6 +207,10 @@ struct Newton_options
   std::vector<char> fixed;
   /// whether the curvature error of fixed vertices counts (true for the gauge vertex)
   bool fixed_in_error = true;
+  /// inexact Newton: solve the Newton system by conjugate gradients preconditioned with the last Cholesky
+  /// factorization (of an earlier Hessian), and factorize again only when they do not reach the forcing
+  /// tolerance within their budget; false: one factorization per Newton step (the reference)
+  bool reuse_factorization = true;
 };
 
 template <class Point_3>
@@ -165,31 +273,96 @@ private:
     return true;
   }
 
-  // the Newton direction at the current state (false: numerical failure)
-  bool direction()
+  // the Newton direction at the current state, for the current max error `err` (false: numerical failure).
+  // Inexact Newton (Dembo-Eisenstat-Steihaug): the relative residual of the direction is at most
+  // eta = min(0.1, max(err, 1e-8)), which keeps the convergence quadratic (the residual is of the order of the
+  // quadratic term) down to the rounding level; `fresh` forces a new factorization.
+  bool direction(double err, bool fresh)
   {
-    eng_.hessian_triplets(trip_);
-    trip_.erase(std::remove_if(trip_.begin(), trip_.end(), [&](const Eigen::Triplet<double>& t) {
-                  return o_.fixed[t.row()] || o_.fixed[t.col()]; }), trip_.end());
-    for(int i = 0; i < n_; ++i) if(o_.fixed[i]) trip_.emplace_back(i, i, 1.0);
-    H_.setFromTriplets(trip_.begin(), trip_.end());
-    for(int i = 0; i < n_; ++i) rhs_[i] = o_.fixed[i] ? 0.0 : -g_[i];
     const auto t0 = std::chrono::steady_clock::now();
-    const bool ok = chol_.solve(H_, eng_.pattern_version, rhs_, delta_, st_);
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    eng_.hessian_lower(H_, o_.fixed);
+    for(int i = 0; i < n_; ++i) rhs_[i] = o_.fixed[i] ? 0.0 : -g_[i];
+    const double eta = (std::min)(0.1, (std::max)(err, 1e-8));
+    const auto t1 = std::chrono::steady_clock::now();
+    st_.hessian_seconds += std::chrono::duration<double>(t1 - t0).count();
+    // the cost of a numeric factorization in CG iterations, estimated from the operation counts of the factor
+    // (the factorization runs about 4 times more flops per second than the memory-bound solves; an estimate,
+    // not a timing, so that the flow is deterministic): the budget of a step is about one factorization, and
+    // after a step that needed more than half of one the factorization is renewed (the Hessian has moved away
+    // from the factorized one)
+    const double ratio = 0.25 * chol_.factorization_over_solve();
+    if(last_cg_iterations_ > 0.5 * ratio) fresh = true;
+    if(!fresh && o_.reuse_factorization && chol_.positive_definite()) {
+      const int budget = int((std::max)(2.0, (std::min)(30.0, ratio)));
+      int iterations = 0;
+      const bool ok = conjugate_gradients(eta, budget, iterations);
+      const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      st_.cg_seconds += dt;
+      last_cg_iterations_ = ok ? iterations : 0;
+      if(ok) { from_cg_ = true; return true; }
+    }
+    last_cg_iterations_ = 0;
+    from_cg_ = false;
+    const auto t2 = std::chrono::steady_clock::now();
+    bool ok = chol_.factorize(H_, eng_.pattern_version, st_);
+    if(ok) { delta_ = rhs_; ok = chol_.solve_in_place(delta_); }
+    st_.solver_used = chol_.used();
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
     if(st_.first_factorization_seconds == 0) st_.first_factorization_seconds = dt;
     st_.factorization_seconds += dt;
     return ok;
+  }
+
+  // preconditioned conjugate gradients on H delta = rhs from delta = 0, the preconditioner being the last
+  // factorization; true when ||residual|| <= eta ||rhs|| within `budget` iterations
+  bool conjugate_gradients(double eta, int budget, int& iterations)
+  {
+    const double bnorm = rhs_.norm();
+    delta_.setZero();
+    iterations = 0;
+    if(bnorm == 0) return true;
+    Eigen::VectorXd& r = cg_r_; Eigen::VectorXd& z = cg_z_; Eigen::VectorXd& p = cg_p_; Eigen::VectorXd& q = cg_q_;
+    r = rhs_; z = r;
+    if(!chol_.solve_in_place(z)) return false;
+    p = z;
+    double rz = r.dot(z);
+    for(int k = 0; k < budget; ++k) {
+      q.noalias() = H_.selfadjointView<Eigen::Lower>() * p;
+      const double pq = p.dot(q);
+      if(!(pq > 0) || !(rz > 0)) return false;
+      const double alpha = rz / pq;
+      delta_ += alpha * p; r -= alpha * q;
+      ++st_.number_of_cg_iterations; ++iterations;
+      if(r.norm() <= eta * bnorm) return delta_.allFinite();
+      z = r;
+      if(!chol_.solve_in_place(z)) return false;
+      const double rz_new = r.dot(z);
+      p = z + (rz_new / rz) * p;
+      rz = rz_new;
+    }
+    return false;
   }
 
   // one damped Newton step; on failure sets the status and restores the previous state. `strict`: accept
   // only a decrease of the max error (polishing)
   bool step(double& err, double& t, bool strict)
   {
-    if(!direction()) { st_.status = Flow_status::NUMERICAL_FAILURE; return false; }
+    if(!direction(err, false)) { st_.status = Flow_status::NUMERICAL_FAILURE; return false; }
+    if(line_search(err, t, strict)) return true;
+    // an inexact direction that the line search rejects: once more with a new factorization
+    if(from_cg_ && !strict && st_.status == Flow_status::LINE_SEARCH_FAILED) {
+      st_.status = Flow_status::MAXIMUM_ITERATIONS;
+      if(!direction(err, true)) { st_.status = Flow_status::NUMERICAL_FAILURE; return false; }
+      return line_search(err, t, strict);
+    }
+    return false;
+  }
+
+  bool line_search(double& err, double& t, bool strict)
+  {
     double slope0 = 0;
     for(int i = 0; i < n_; ++i) slope0 += g_[i] * delta_[i];
-    u_old_ = eng_.u; g_old_ = g_;
+    u_old_ = eng_.u;
     const double err_old = err;
     t = 1.0;
     // accept t when the energy decreases (trapezoidal estimate from the directional derivatives; the energy
@@ -230,7 +403,8 @@ private:
     pr.iteration = st_.iterations; pr.max_curvature_error = err; pr.step_length = t; pr.number_of_flips = eng_.flips;
     if(o_.verbose)
       std::cerr << "Ricci flow: iteration " << st_.iterations << "  max |K - target| = " << err
-                << "  step = " << t << "  flips = " << eng_.flips << std::endl;
+                << "  step = " << t << "  flips = " << eng_.flips << "  factorizations = "
+                << st_.number_of_factorizations << "  CG iterations = " << st_.number_of_cg_iterations << std::endl;
     return !o_.callback || o_.callback(pr);
   }
 
@@ -252,11 +426,12 @@ private:
   Newton_options o_;
   Flow_statistics& st_;
   int n_;
-  std::vector<double> g_, u_old_, g_old_;
+  std::vector<double> g_, u_old_;
   Sparse_cholesky chol_;
-  std::vector<Eigen::Triplet<double> > trip_;
   Sparse_matrix H_;
-  Eigen::VectorXd rhs_, delta_;
+  Eigen::VectorXd rhs_, delta_, cg_r_, cg_z_, cg_p_, cg_q_;
+  bool from_cg_ = false;
+  int last_cg_iterations_ = 0;      // CG iterations of the last accepted inexact direction
   double energy_ = 0;
 };
 

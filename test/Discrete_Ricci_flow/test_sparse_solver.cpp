@@ -1,0 +1,197 @@
+// Tests of the Discrete_Ricci_flow package, part 4: the Newton systems (issue 11, items 3 and 4). The Hessian
+// assembled in place (`hessian_lower`) against the triplet assembly, the two sparse solvers against each other
+// and against the residual, the CHOLMOD -> LDLT fallback on an indefinite matrix, and the inexact Newton
+// (conjugate gradients preconditioned by an earlier factorization) against the reference flow with one
+// factorization per step: same metric, same accuracy, fewer factorizations.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Discrete_Ricci_flow.h>
+
+#include "cgal_hc_test.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace {
+typedef CGAL::Epick K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+namespace RF = CGAL::Discrete_Ricci_flow;
+typedef RF::Background_geometry Geo;
+
+Mesh read_cgal(const std::string& name)
+{
+  Mesh m;
+  const std::string path = std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/" + name;
+  if(!CGAL::IO::read_polygon_mesh(path, m)) throw std::runtime_error("cannot read " + path);
+  return m;
+}
+
+// max |lower(H_triplets) - H_lower| over all entries, and whether the patterns agree (every triplet position
+// of the lower triangle is in the pattern, and the pattern has no entry outside it)
+double compare_hessians(RF::internal::Flow_engine<Point_3>& eng, const std::vector<char>& fixed, bool& same_pattern,
+                        double& max_entry)
+{
+  std::vector<Eigen::Triplet<double> > trip;
+  eng.hessian_triplets(trip);
+  std::map<std::pair<int, int>, double> ref;
+  for(const auto& t : trip) {
+    if(t.row() < t.col()) continue;
+    const bool f = !fixed.empty() && (fixed[t.row()] || fixed[t.col()]);
+    ref[{t.row(), t.col()}] += f ? 0.0 : t.value();
+  }
+  if(!fixed.empty()) for(std::size_t i = 0; i < fixed.size(); ++i) if(fixed[i]) ref[{int(i), int(i)}] = 1.0;
+  Eigen::SparseMatrix<double> H;
+  eng.hessian_lower(H, fixed);
+  same_pattern = std::size_t(H.nonZeros()) == ref.size();
+  double d = 0;
+  max_entry = 0;
+  for(int j = 0; j < H.outerSize(); ++j)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(H, j); it; ++it) {
+      auto f = ref.find({int(it.row()), int(it.col())});
+      if(f == ref.end() || it.row() < it.col()) { same_pattern = false; continue; }
+      d = (std::max)(d, std::abs(f->second - it.value()));
+      max_entry = (std::max)(max_entry, std::abs(it.value()));
+    }
+  return d;
+}
+} // namespace
+
+// the in-place assembly equals the triplet assembly (all backgrounds and schemes, with and without fixed
+// vertices, and on an intrinsic triangulation after thousands of Ptolemy flips, with its multi-edges)
+CGAL_HC_TEST_CASE(hessian_lower_equals_triplet_assembly)
+{
+  Mesh tm = read_cgal("eight.off");
+  const Geo geos[3] = {Geo::EUCLIDEAN, Geo::HYPERBOLIC, Geo::SPHERICAL};
+  const RF::Scheme schemes[4] = {RF::Scheme::VERTEX_SCALING, RF::Scheme::TANGENTIAL_CIRCLE_PACKING,
+                                 RF::Scheme::THURSTON_CIRCLE_PACKING, RF::Scheme::INVERSIVE_DISTANCE};
+  for(auto geo : geos) for(auto sch : schemes) {
+    Mesh m = tm;
+    RF::internal::Flow_engine<Point_3> eng(m, geo, sch, false);
+    for(auto e : m.edges()) {
+      const auto h = m.halfedge(e);
+      const double l = std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
+      eng.edge_data[e] = sch == RF::Scheme::VERTEX_SCALING ? 0.025 * l : 1.0 + 0.1 * (std::size_t(e) % 3);
+    }
+    for(auto v : m.vertices())
+      eng.u[v] = sch == RF::Scheme::VERTEX_SCALING ? 0.1 * std::sin(double(v))
+                 : RF::internal::u_from_radius(geo, 0.02 * (1.0 + 0.2 * std::sin(double(v))));
+    eng.compute_lengths(); eng.compute_angles();
+    for(int with_fixed = 0; with_fixed < 2; ++with_fixed) {
+      std::vector<char> fixed;
+      if(with_fixed) { fixed.assign(m.number_of_vertices(), 0); fixed[0] = fixed[7] = fixed[100] = 1; }
+      bool same = false; double max_entry = 0;
+      const double d = compare_hessians(eng, fixed, same, max_entry);
+      CGAL_HC_CHECK_MSG(same, "geometry " << int(geo) << " scheme " << int(sch) << ": patterns differ");
+      CGAL_HC_CHECK_MSG(d <= 1e-12 * (1 + max_entry), "geometry " << int(geo) << " scheme " << int(sch)
+                        << " fixed " << with_fixed << ": |H_lower - H_triplets| = " << d);
+      CGAL_HC_CHECK(max_entry > 0.1);
+    }
+  }
+  // after flips: the intrinsic triangulation of elephant_cid.obj (about 12k Ptolemy flips)
+  Mesh cid;
+  CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_DATA_DIR) + "/meshes/elephant_cid.obj", cid));
+  auto metric = RF::hyperbolic_uniformization(cid);
+  CGAL_HC_CHECK(metric.converged() && metric.statistics().number_of_flips > 1000);
+  Mesh m = metric.intrinsic_mesh();
+  RF::internal::Flow_engine<Point_3> eng(m, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, false);
+  for(auto e : m.edges()) eng.edge_data[e] = std::sinh(0.5 * metric.length(e));
+  eng.compute_lengths(); eng.compute_angles();
+  bool same = false; double max_entry = 0;
+  const double d = compare_hessians(eng, std::vector<char>(), same, max_entry);
+  CGAL_HC_CHECK(same);
+  CGAL_HC_CHECK_MSG(d <= 1e-12 * (1 + max_entry), "intrinsic elephant_cid: |H_lower - H_triplets| = " << d);
+}
+
+// both solvers solve the Newton system of a real mesh to the residual of a direct solve; the CG-preconditioner
+// interface (solve_in_place) gives the same solution; an indefinite matrix falls back from CHOLMOD to LDLT
+CGAL_HC_TEST_CASE(sparse_solvers_agree)
+{
+  Mesh m = read_cgal("elephant.off");
+  RF::internal::Flow_engine<Point_3> eng(m, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, false);
+  for(auto e : m.edges()) {
+    const auto h = m.halfedge(e);
+    eng.edge_data[e] = 0.01 * std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
+  }
+  eng.compute_lengths(); eng.compute_angles();
+  Eigen::SparseMatrix<double> H;
+  eng.hessian_lower(H, std::vector<char>());
+  const int n = int(H.rows());
+  Eigen::VectorXd b(n);
+  for(int i = 0; i < n; ++i) b[i] = std::sin(0.37 * i);
+  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
+  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  std::vector<Eigen::VectorXd> xs;
+  for(auto s : solvers) {
+    RF::internal::Sparse_cholesky chol(s);
+    RF::Flow_statistics st;
+    Eigen::VectorXd x;
+    CGAL_HC_CHECK(chol.solve(H, 0, b, x, st));
+    CGAL_HC_CHECK(st.solver_used == s && chol.positive_definite());
+    const Eigen::VectorXd r = b - H.selfadjointView<Eigen::Lower>() * x;
+    CGAL_HC_CHECK_MSG(r.norm() <= 1e-10 * b.norm(), "solver " << int(s) << ": relative residual " << r.norm() / b.norm());
+    Eigen::VectorXd y = b;
+    CGAL_HC_CHECK(chol.solve_in_place(y));
+    CGAL_HC_CHECK((y - x).norm() <= 1e-12 * x.norm());
+    CGAL_HC_CHECK(chol.factorization_over_solve() > 1);
+    xs.push_back(x);
+  }
+  if(xs.size() == 2) CGAL_HC_CHECK((xs[0] - xs[1]).norm() <= 1e-9 * xs[0].norm());
+  // indefinite: the Hessian with one diagonal entry made negative
+  Eigen::SparseMatrix<double> A = H;
+  A.coeffRef(5, 5) = -1.0;
+  for(auto s : solvers) {
+    RF::internal::Sparse_cholesky chol(s);
+    RF::Flow_statistics st;
+    Eigen::VectorXd x;
+    CGAL_HC_CHECK(chol.solve(A, 0, b, x, st));
+    CGAL_HC_CHECK(st.solver_used == RF::Sparse_solver::SIMPLICIAL_LDLT && !chol.positive_definite());
+    CGAL_HC_CHECK(st.number_of_solver_fallbacks == (s == RF::Sparse_solver::SUPERNODAL_CHOLMOD ? 1u : 0u));
+    const Eigen::VectorXd r = b - A.selfadjointView<Eigen::Lower>() * x;
+    CGAL_HC_CHECK_MSG(r.norm() <= 1e-8 * b.norm(), "indefinite: relative residual " << r.norm() / b.norm());
+  }
+}
+
+// inexact Newton (the default) and the reference (one factorization per Newton step) reach the same metric
+// with the same accuracy, the default with fewer factorizations; every mesh also with the other solver
+CGAL_HC_TEST_CASE(factorization_reuse_gives_the_same_metric)
+{
+  std::vector<Mesh> meshes;
+  meshes.push_back(read_cgal("eight.off"));
+  meshes.push_back(read_cgal("elephant.off"));
+  meshes.push_back(read_cgal("anchor.off"));
+  Mesh cid;
+  CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_DATA_DIR) + "/meshes/elephant_cid.obj", cid));
+  meshes.push_back(cid);
+  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
+  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  std::size_t with_cg = 0;
+  for(std::size_t k = 0; k < meshes.size(); ++k) for(auto s : solvers) {
+    auto ref = RF::hyperbolic_uniformization(meshes[k], RF::parameters::reuse_factorization(false, RF::parameters::sparse_solver(s)));
+    auto fast = RF::hyperbolic_uniformization(meshes[k], RF::parameters::sparse_solver(s));
+    const auto& sr = ref.statistics();
+    const auto& sf = fast.statistics();
+    CGAL_HC_CHECK_MSG(sr.converged() && sf.converged(), "mesh " << k << " solver " << int(s));
+    // the reference factorizes at every Newton step (also at a last polishing step that is not accepted)
+    CGAL_HC_CHECK(sr.number_of_cg_iterations == 0 && sr.number_of_factorizations >= std::size_t(sr.iterations) &&
+                  sr.number_of_factorizations <= std::size_t(sr.iterations) + 1);
+    CGAL_HC_CHECK_MSG(sf.number_of_factorizations <= sr.number_of_factorizations, "mesh " << k << ": "
+                      << sf.number_of_factorizations << " factorizations against " << sr.number_of_factorizations);
+    if(sf.number_of_cg_iterations > 0) ++with_cg;
+    // the same accuracy: the default polishes to the rounding level
+    CGAL_HC_CHECK_MSG(sf.max_curvature_error <= 1e-12 && sr.max_curvature_error <= 1e-12,
+                      "mesh " << k << ": errors " << sf.max_curvature_error << ", " << sr.max_curvature_error);
+    // the same metric (the solution is unique; intrinsic triangulations may differ by flips of cocircular
+    // edges, so compare the conformal factors, which determine the metric)
+    double du = 0;
+    const auto& uf = fast.conformal_factors();
+    const auto& ur = ref.conformal_factors();
+    CGAL_HC_CHECK(uf.size() == ur.size());
+    for(std::size_t i = 0; i < uf.size() && i < ur.size(); ++i) du = (std::max)(du, std::abs(uf[i] - ur[i]));
+    CGAL_HC_CHECK_MSG(du < 1e-9, "mesh " << k << " solver " << int(s) << ": max |u_fast - u_ref| = " << du);
+    CGAL_HC_CHECK(std::abs(fast.total_area() - ref.total_area()) < 1e-8 * ref.total_area());
+  }
+  CGAL_HC_CHECK(with_cg > 0); // the conjugate gradients did run
+}
