@@ -125,6 +125,35 @@ CGAL_HC_TEST_CASE(options_out_of_range)
   else CGAL_HC_CHECK(RF::hyperbolic_uniformization(m, RF::parameters::sparse_solver(RF::Sparse_solver::SUPERNODAL_CHOLMOD)).converged());
 }
 
+// input_connectivity_is_valid() of the uniformization functions, which write the input lengths into a constant
+// (write-only) map: it used to read those lengths back as 0 and be false on every mesh. It must agree with the
+// same flow run with a real output map, whose lengths are checked here.
+CGAL_HC_TEST_CASE(input_connectivity_validity_without_an_output_map)
+{
+  for(const std::string name : {"eight.off", "femur.off"}) {
+    Mesh m = read(name);
+    const auto r = RF::hyperbolic_uniformization(m);
+    auto out = m.add_property_map<Mesh::Edge_index, double>("e:out2", 0.0).first;
+    const auto r2 = RF::compute_metric(m, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0), out);
+    bool valid = true;
+    for(auto f : m.faces()) {
+      const auto h = m.halfedge(f);
+      const double l[3] = {out[m.edge(h)], out[m.edge(m.next(h))], out[m.edge(m.prev(h))]};
+      for(int i = 0; i < 3; ++i) valid = valid && l[i] < l[(i + 1) % 3] + l[(i + 2) % 3];
+    }
+    std::cout << "  " << name << ": " << r.statistics().number_of_flips << " flips, input connectivity "
+              << (r.input_connectivity_is_valid() ? "valid" : "not valid") << std::endl;
+    CGAL_HC_CHECK_MSG(r.converged() && r2.converged(), name);
+    CGAL_HC_CHECK_MSG(r2.input_connectivity_is_valid() == valid, name);
+    CGAL_HC_CHECK_MSG(r.input_connectivity_is_valid() == valid, name);
+    if(r.statistics().number_of_flips == 0) CGAL_HC_CHECK_MSG(r.input_connectivity_is_valid(), name);
+  }
+  // the positive case: eight.off without flips converges on its own connectivity (see the next test case)
+  const auto r = RF::hyperbolic_uniformization(read("eight.off"), CGAL::parameters::do_flip(false));
+  CGAL_HC_CHECK(r.converged() && r.statistics().number_of_flips == 0);
+  CGAL_HC_CHECK(r.input_connectivity_is_valid());
+}
+
 // do_flip(false): on these meshes the flow without flips reaches K = 0 only with triangles that violate a
 // triangle inequality (Luo's extended angles): the status must say so (never CONVERGED), and the lengths
 // written on the input connectivity must be reported invalid. The violations are recounted here from the

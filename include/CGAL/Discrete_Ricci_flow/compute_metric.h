@@ -23,8 +23,10 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <sstream>
@@ -397,6 +399,15 @@ bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow
     for(auto it = init.flips.rbegin(); it != init.flips.rend(); ++it) back.flip(*it);
     for(const auto& ec : edge_corr) penner0[ec.second] = back.edge_data[ec.second];
   }
+  // the lengths are kept here, keyed by the edge's vertex pair (the input has no multi-edge), and checked from
+  // here: `out` may be write-only (the uniformization functions pass a constant map, which reads back 0)
+  auto key = [&](auto h) {
+    std::uint64_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
+    if(a > b) std::swap(a, b);
+    return (a << 32) | b;
+  };
+  std::vector<std::pair<std::uint64_t, double> > written;
+  written.reserve(edge_corr.size());
   for(const auto& ec : edge_corr) {
     const auto h = halfedge(ec.first, tm);
     const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
@@ -404,12 +415,18 @@ bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow
                        ? length_from_lambda(eng.geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0[ec.second])
                        : eng.len[ec.second]; // no flips for the circle packings: same connectivity
     put(out, ec.first, l);
+    written.emplace_back(key(h), l);
   }
+  std::sort(written.begin(), written.end());
+  auto written_length = [&](auto h) {
+    const auto it = std::lower_bound(written.begin(), written.end(), std::make_pair(key(h), -HUGE_VAL));
+    return it != written.end() && it->first == key(h) ? it->second : 0.0;
+  };
   // checked even without flips: a flow that ends with degenerate triangles (status DEGENERATE_TRIANGLES, e.g.
   // with do_flip(false)) leaves lengths on the input connectivity that violate a triangle inequality
   for(auto f : faces(tm)) {
     double l[3] = {0, 0, 0}; int i = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { if(i >= 3) break; l[i++] = CGAL::to_double(get(out, edge(h, tm))); }
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { if(i >= 3) break; l[i++] = written_length(h); }
     for(int k = 0; k < 3; ++k) if(!(l[k] < l[(k + 1) % 3] + l[(k + 2) % 3])) return false;
   }
   return true;
