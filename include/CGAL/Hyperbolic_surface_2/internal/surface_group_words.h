@@ -6,10 +6,12 @@
 #ifndef CGAL_HYPERBOLIC_SURFACE_2_INTERNAL_SURFACE_GROUP_WORDS_H
 #define CGAL_HYPERBOLIC_SURFACE_2_INTERNAL_SURFACE_GROUP_WORDS_H
 
+#include <algorithm>
 #include <cstdlib>
 #include <deque>
 #include <initializer_list>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -41,38 +43,43 @@ inline std::vector<int> inverse(const std::vector<int>& w)
 
 /// Dehn's algorithm: free reduction, and every subword that is a piece of length > |R|/2 of a cyclic
 /// conjugate of R or R^-1 is replaced by the inverse of the complementary piece (strictly shorter).
-/// Stack based, linear in |w| (times |R|^2). The result represents the same group element.
+/// Stack based. The cyclic conjugates are tried in the order R_0, R_0^-1, R_1, R_1^-1, ... (R_r: R rotated by r)
+/// and, in each, the longest piece first; only the pieces that end with the letter just pushed are looked at,
+/// found through an index built once per call (O(|R|^2)), so that a letter costs O(|R|) candidates, not
+/// O(|R|^2) (genus 133: 532 instead of 283,000). The result represents the same group element.
 inline std::vector<int> dehn_reduce(const std::vector<int>& w, const std::vector<int>& R)
 {
   const std::size_t n = R.size();
-  std::vector<std::vector<int> > rot;
+  if(n == 0) return free_reduce(w);
   const std::vector<int> Ri = inverse(R);
-  for(std::size_t r = 0; r < n; ++r) {
-    std::vector<int> c1, c2;
-    for(std::size_t i = 0; i < n; ++i) { c1.push_back(R[(r + i) % n]); c2.push_back(Ri[(r + i) % n]); }
-    rot.push_back(c1); rot.push_back(c2);
-  }
+  // letter t of the cyclic conjugate k: k = 2r (R rotated by r) or 2r + 1 (R^-1 rotated by r)
+  auto letter = [&](std::size_t k, std::size_t t) { return (k % 2 == 0 ? R : Ri)[(k / 2 + t) % n]; };
+  int max_abs = 0;
+  for(int l : R) max_abs = (std::max)(max_abs, std::abs(l));
+  for(int l : w) max_abs = (std::max)(max_abs, std::abs(l));
+  // candidates[x + max_abs]: the pieces (k, L) with last letter x, L > n/2, ordered by k, then by L decreasing
+  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > candidates(std::size_t(2 * max_abs + 1));
+  for(std::size_t k = 0; k < 2 * n; ++k)
+    for(std::size_t L = n; L > n / 2; --L)
+      candidates[std::size_t(letter(k, L - 1) + max_abs)].emplace_back(k, L);
   std::vector<int> S;
   std::deque<int> todo(w.begin(), w.end());
   while(!todo.empty()) {
     const int x = todo.front(); todo.pop_front();
     if(!S.empty() && S.back() == -x) { S.pop_back(); continue; }
     S.push_back(x);
-    bool replaced = false;
-    for(const std::vector<int>& c : rot) {
-      for(std::size_t L = n; L > n / 2 && !replaced; --L) {
-        if(S.size() < L || S.back() != c[L - 1]) continue;
-        bool match = true;
-        for(std::size_t t = 0; t < L && match; ++t) match = S[S.size() - L + t] == c[t];
-        if(!match) continue;
-        S.resize(S.size() - L);
-        // c[0..L) = (c[L..n))^-1
-        std::vector<int> rep;
-        for(std::size_t t = n; t > L; --t) rep.push_back(-c[t - 1]);
-        todo.insert(todo.begin(), rep.begin(), rep.end());
-        replaced = true;
-      }
-      if(replaced) break;
+    for(const auto& kl : candidates[std::size_t(x + max_abs)]) {
+      const std::size_t k = kl.first, L = kl.second;
+      if(S.size() < L) continue;
+      bool match = true;
+      for(std::size_t t = 0; t < L && match; ++t) match = S[S.size() - L + t] == letter(k, t);
+      if(!match) continue;
+      S.resize(S.size() - L);
+      // the piece c[0..L) equals (c[L..n))^-1
+      std::vector<int> rep;
+      for(std::size_t t = n; t > L; --t) rep.push_back(-letter(k, t - 1));
+      todo.insert(todo.begin(), rep.begin(), rep.end());
+      break;
     }
   }
   return S;
