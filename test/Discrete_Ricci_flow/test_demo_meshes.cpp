@@ -20,6 +20,8 @@
 #include <sstream>
 #include <string>
 
+#include "demo_meshes.h"
+
 namespace {
 typedef CGAL::Epick K;
 typedef K::Point_3 Point_3;
@@ -29,25 +31,7 @@ namespace RF = CGAL::Discrete_Ricci_flow;
 // the closed connected manifold meshes of the demo data, triangulated; `genus` receives their genus
 std::vector<std::pair<std::string, Mesh> > demo_meshes(long genus_min, long genus_max)
 {
-  std::vector<std::string> files;
-  for(const auto& e : std::filesystem::directory_iterator(std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes"))
-    if(e.path().extension() == ".off") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  std::vector<std::pair<std::string, Mesh> > r;
-  for(const std::string& f : files) {
-    Mesh m;
-    try { if(!CGAL::IO::read_polygon_mesh(f, m) || m.is_empty() || !m.is_valid(false) || !CGAL::is_closed(m)) continue; }
-    catch(...) { continue; }
-    std::vector<std::size_t> cc(m.number_of_faces());
-    if(CGAL::Polygon_mesh_processing::connected_components(m, CGAL::make_property_map(cc)) != 1) continue;
-    if(!CGAL::is_triangle_mesh(m)) CGAL::Polygon_mesh_processing::triangulate_faces(m);
-    const long chi = long(m.number_of_vertices()) - long(m.number_of_edges()) + long(m.number_of_faces());
-    if(chi > 2 || chi % 2 != 0) continue;
-    const long g = (2 - chi) / 2;
-    if(g < genus_min || g > genus_max) continue;
-    r.emplace_back(f.substr(f.find_last_of('/') + 1), std::move(m));
-  }
-  return r;
+  return ricci_test::demo_meshes(genus_min, genus_max);
 }
 
 double max_abs_curvature(const RF::Discrete_metric<Point_3>& r)

@@ -26,6 +26,8 @@
 #include <filesystem>
 #include <string>
 
+#include "demo_meshes.h"
+
 namespace {
 typedef CGAL::Epick K;
 typedef K::Point_3 Point_3;
@@ -37,24 +39,7 @@ typedef CGAL::Poincare_disk_isometry_2<CGAL::Simple_cartesian<long double> > LIs
 
 std::vector<std::pair<std::string, Mesh> > hyperbolic_meshes()
 {
-  std::vector<std::string> files;
-  for(const auto& e : std::filesystem::directory_iterator(std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes"))
-    if(e.path().extension() == ".off") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  files.push_back(std::string(CGAL_HC_DATA_DIR) + "/meshes/elephant_cid.obj");
-  std::vector<std::pair<std::string, Mesh> > r;
-  for(const std::string& f : files) {
-    Mesh m;
-    try { if(!CGAL::IO::read_polygon_mesh(f, m) || m.is_empty() || !m.is_valid(false) || !CGAL::is_closed(m)) continue; }
-    catch(...) { continue; }
-    std::vector<std::size_t> cc(m.number_of_faces());
-    if(CGAL::Polygon_mesh_processing::connected_components(m, CGAL::make_property_map(cc)) != 1) continue;
-    if(!CGAL::is_triangle_mesh(m)) CGAL::Polygon_mesh_processing::triangulate_faces(m);
-    const long chi = long(m.number_of_vertices()) - long(m.number_of_edges()) + long(m.number_of_faces());
-    if(chi > -2 || chi % 2 != 0) continue;
-    r.emplace_back(f.substr(f.find_last_of('/') + 1), std::move(m));
-  }
-  return r;
+  return ricci_test::demo_meshes(2, 1000000, {std::string(CGAL_HC_DATA_DIR) + "/meshes/elephant_cid.obj"});
 }
 
 // the user's oracle: double products of the returned matrices
