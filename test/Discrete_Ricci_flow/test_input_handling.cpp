@@ -180,6 +180,81 @@ CGAL_HC_TEST_CASE(no_flip_degenerate_solution_is_not_converged)
   }
 }
 
+// issue 12: eight.off with one vertex moved far away (+2 to +100 in x, the mesh is 0.5 across), or the whole
+// mesh in units of 1e80 / 1e-80. The full Newton step from the uniform-scale start moved u by hundreds: lengths
+// under- or overflowed, +10 and 1e80 ended NUMERICAL_FAILURE with every length 0, +5 and 1e-80 threw, +2 took
+// 185,798 flips. Every run must converge to the metric of the same conformal class (scale-invariant), and a run
+// stopped early must return its last accepted iterate: finite positive lengths whose curvature is the error
+// the statistics report.
+CGAL_HC_TEST_CASE(far_vertex_and_extreme_scales)
+{
+  const Mesh base = read("eight.off");
+  const auto ref = RF::hyperbolic_uniformization(base);
+  CGAL_HC_CHECK(ref.converged());
+  auto max_error = [](const auto& r) {
+    double e = 0;
+    for(auto v : r.intrinsic_mesh().vertices()) e = (std::max)(e, std::abs(r.curvature(v) - r.target_curvatures()[v]));
+    return e;
+  };
+  auto lengths_ok = [](const auto& r) {
+    for(auto e : r.intrinsic_mesh().edges()) if(!(r.length(e) > 0 && std::isfinite(r.length(e)))) return false;
+    return true;
+  };
+  // scales: the same lengths as the unscaled mesh, conformal factors shifted by -log(scale)
+  for(const double scale : {1e80, 1e-80, 1e150, 1e-150}) {
+    Mesh m = base;
+    for(auto v : m.vertices()) m.point(v) = CGAL::ORIGIN + scale * (m.point(v) - CGAL::ORIGIN);
+    const auto r = RF::hyperbolic_uniformization(m);
+    CGAL_HC_CHECK_MSG(r.converged(), "scale " << scale << ": " << RF::to_string(r.statistics().status));
+    CGAL_HC_CHECK_MSG(lengths_ok(r) && std::abs(r.total_area() - 4 * CGAL_PI) < 1e-9, "scale " << scale);
+    double du = 0;
+    for(std::size_t i = 0; i < r.conformal_factors().size(); ++i)
+      du = (std::max)(du, std::abs(r.conformal_factors()[i] + std::log(scale) - ref.conformal_factors()[i]));
+    CGAL_HC_CHECK_MSG(du < 1e-8, "scale " << scale << ": conformal factors differ by " << du);
+    std::cout << "  eight.off x " << scale << ": " << RF::to_string(r.statistics().status) << ", "
+              << r.statistics().iterations << " iterations, |u + log s - u_ref| = " << du << std::endl;
+  }
+  // the flat metric keeps the input's unit: a torus scaled by 2^266 (about 1e80; a power of two, so that the
+  // input is exactly the scaled one) has lengths 2^266 times the unscaled ones
+  {
+    const double big_scale = std::ldexp(1.0, 266);
+    const Mesh torus = read("mpi_triang.off");
+    Mesh big = torus;
+    for(auto v : big.vertices()) big.point(v) = CGAL::ORIGIN + big_scale * (big.point(v) - CGAL::ORIGIN);
+    const auto r1 = RF::flat_metric(torus), r2 = RF::flat_metric(big);
+    CGAL_HC_CHECK_MSG(r1.converged() && r2.converged(), RF::to_string(r1.statistics().status) << " / " << RF::to_string(r2.statistics().status) << ", errors " << r1.statistics().max_curvature_error << " / " << r2.statistics().max_curvature_error);
+    double du = 0, max1 = 0, max2 = 0;
+    for(std::size_t i = 0; i < r1.conformal_factors().size(); ++i)
+      du = (std::max)(du, std::abs(r1.conformal_factors()[i] - r2.conformal_factors()[i]));
+    for(auto e : r1.intrinsic_mesh().edges()) max1 = (std::max)(max1, r1.length(e));
+    for(auto e : r2.intrinsic_mesh().edges()) max2 = (std::max)(max2, r2.length(e));
+    CGAL_HC_CHECK_MSG(du < 1e-8 && std::abs(max2 / big_scale - max1) < 1e-8 * max1,
+                      "flat metric at scale 2^266: conformal factors differ by " << du << ", longest edges " << max1
+                                                                                 << " and " << max2 << " / 2^266");
+  }
+  // one vertex far away
+  for(const double dx : {2.0, 5.0, 10.0, 100.0, 1e6}) {
+    Mesh m = base;
+    const auto v0 = *m.vertices().begin();
+    m.point(v0) = m.point(v0) + K::Vector_3(dx, 0, 0);
+    const auto r = RF::hyperbolic_uniformization(m);
+    const auto& st = r.statistics();
+    std::cout << "  eight.off, vertex 0 moved by " << dx << ": " << RF::to_string(st.status) << ", " << st.iterations
+              << " iterations, " << st.number_of_flips << " flips" << std::endl;
+    CGAL_HC_CHECK_MSG(r.converged() && st.max_curvature_error < 1e-10, "dx " << dx << ": " << RF::to_string(st.status));
+    CGAL_HC_CHECK_MSG(lengths_ok(r) && std::abs(r.total_area() - 4 * CGAL_PI) < 1e-9, "dx " << dx);
+    CGAL_HC_CHECK_MSG(st.number_of_flips < 10 * r.intrinsic_mesh().number_of_edges(), "dx " << dx << ": " << st.number_of_flips << " flips");
+    // stopped early: the last accepted iterate, whose curvature error is the one reported
+    for(const int n : {1, 2, 3}) {
+      const auto s = RF::hyperbolic_uniformization(m, CGAL::parameters::number_of_iterations(n));
+      CGAL_HC_CHECK_MSG(lengths_ok(s), "dx " << dx << ", " << n << " iterations: lengths not finite and positive");
+      CGAL_HC_CHECK_MSG(std::abs(max_error(s) - s.statistics().max_curvature_error) < 1e-9 * (1 + max_error(s)),
+                        "dx " << dx << ", " << n << " iterations: reported error " << s.statistics().max_curvature_error
+                              << ", recomputed " << max_error(s));
+    }
+  }
+}
+
 // the defect of a motion is +infinity when its matrix is not finite or has a non-positive determinant (the
 // relator's partial products of cheese.off lose their determinant, and the defect of NaN entries used to read
 // as 0)

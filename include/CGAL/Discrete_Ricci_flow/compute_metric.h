@@ -274,6 +274,19 @@ std::vector<double> input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, cons
   return len;
 }
 
+/// divides the lengths by the power of two nearest below their mean (computed without overflow; exact, so
+/// that the flow of a mesh scaled by 2^k is the same computation) and returns that power
+inline double normalize_lengths(std::vector<double>& len)
+{
+  double mx = 0;
+  for(double l : len) mx = (std::max)(mx, l);
+  double mean = 0;
+  for(double l : len) mean += l / mx;
+  const double unit = std::ldexp(1.0, std::ilogb(mx) + std::ilogb(mean / double(len.size())));
+  for(double& l : len) l /= unit;
+  return unit;
+}
+
 /// the first face of m that is degenerate for the Euclidean lengths `len` (relative tolerance 1e-12), or
 /// null; `area` receives the total Euclidean area
 template <class Mesh>
@@ -288,7 +301,8 @@ typename Mesh::Face_index degenerate_face(const Mesh& m, const std::vector<doubl
     for(int i = 0; i < 3; ++i)
       if(bad == Mesh::null_face() && !(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3] - 1e-12 * s)) {
         std::ostringstream os;
-        os << "degenerate face " << std::size_t(f) << " (edge lengths " << l[0] << ", " << l[1] << ", " << l[2] << ")";
+        os << "degenerate face " << std::size_t(f) << " (edge lengths " << l[0] << ", " << l[1] << ", " << l[2]
+           << " in units of the mean edge length)";
         msg = os.str(); bad = f;
       }
     const double a2 = s * (s - l[0]) * (s - l[1]) * (s - l[2]);
@@ -383,7 +397,7 @@ void initial_state(Flow_engine<Point_3>& eng, const std::vector<double>& len, do
 template <class TriangleMesh, class VIM, class OutMap, class Point_3, class EdgeCorr>
 bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow_engine<Point_3>& eng,
                          const std::vector<double>& input_len, const Initial_flips<Point_3>& init,
-                         const EdgeCorr& edge_corr)
+                         const EdgeCorr& edge_corr, double out_scale)
 {
   const auto& m = eng.m;
   // Penner coordinates (at u = 0) of the input connectivity: the input half-lengths, or, after geometric initial
@@ -414,8 +428,8 @@ bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow
     const double l = eng.scheme == Scheme::VERTEX_SCALING
                        ? length_from_lambda(eng.geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0[ec.second])
                        : eng.len[ec.second]; // no flips for the circle packings: same connectivity
-    put(out, ec.first, l);
-    written.emplace_back(key(h), l);
+    put(out, ec.first, out_scale * l);
+    written.emplace_back(key(h), l); // (checked in the flow's unit)
   }
   std::sort(written.begin(), written.end());
   auto written_length = [&](auto h) {
@@ -511,6 +525,10 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor, typename Mesh::Edge_index> > edge_corr;
   std::vector<double> input_len =
     internal::input_lengths(tm, vpm, vim, get_parameter(np, CGAL::internal_np::ricci_edge_length_map_t_v), m, vmap, edge_corr);
+  // the flow is invariant under a uniform scale of the input: it runs on lengths of mean about 1 (a mesh in
+  // units of 1e80 or 1e-80 has areas and Heron products out of the range of double), and the conformal
+  // factors are converted back to the input's lengths at the end
+  const double unit = internal::normalize_lengths(input_len);
   std::vector<double> target_k(vmap.size());
   for(auto v : vertices(tm)) target_k[get(vim, v)] = CGAL::to_double(get(target_curvature, v));
   const double target_area = internal::check_gauss_bonnet(geo, target_k, topo.euler_characteristic);
@@ -543,14 +561,23 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   internal::Newton_solver<Point_3>(eng, o, st).run();
 
   auto& lengths = internal::Metric_access::add_lengths(res);
-  for(auto e : m.edges()) {
-    // only a non-finite initial state can get here (steps with non-finite values are never accepted)
-    if(!std::isfinite(eng.len[e]))
-      internal::throw_numerical_error("the initial state of the scheme has non-finite edge lengths");
-    lengths[e] = eng.len[e];
-  }
-  const bool valid = internal::write_input_lengths(tm, vim, edge_length_out, eng, input_len, init, edge_corr);
-  internal::Metric_access::set(res, geo, eng.u, target_k, topo.genus, valid);
+  // only an unusable initial state can get here (the line search accepts no state with a zero or non-finite
+  // length): the metric would not be the last accepted iterate
+  if(!eng.lengths_are_usable())
+    internal::throw_numerical_error("the initial state of the scheme has zero, non-finite or overflowing edge "
+                                    "lengths (input edge lengths too far apart for double arithmetic)");
+  // back to the input's unit: E^2 lengths scale with it (the flow ran with u of order 1: u of order
+  // log(1e80) would lose two digits of the curvature), H^2 and S^2 lengths are absolute; the conformal factors
+  // are relative to the input lengths for vertex scaling (lambda = e^{(u_i+u_j)/2} l_ij / 2) and
+  // log(radius) (E^2) or absolute (H^2, S^2) for the circle packings
+  const bool euclidean = geo == Background_geometry::EUCLIDEAN;
+  const double out_scale = euclidean ? unit : 1.0;
+  for(auto e : m.edges()) lengths[e] = out_scale * eng.len[e];
+  const bool valid = internal::write_input_lengths(tm, vim, edge_length_out, eng, input_len, init, edge_corr, out_scale);
+  std::vector<double> u = eng.u;
+  const double du = scheme == Scheme::VERTEX_SCALING ? (euclidean ? 0.0 : -std::log(unit)) : (euclidean ? std::log(unit) : 0.0);
+  for(double& x : u) x += du;
+  internal::Metric_access::set(res, geo, u, target_k, topo.genus, valid);
   st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if(options.verbose)
     std::cerr << "Ricci flow: " << to_string(st.status) << " after " << st.iterations << " iterations, max error "

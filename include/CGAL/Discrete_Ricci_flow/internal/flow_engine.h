@@ -206,6 +206,14 @@ public:
       if(!m.is_border(h)) K[m.target(m.next(h))] -= angle[h];
   }
 
+  // false if a length is zero, not finite, or (H^2) so long that cosh overflows in the angle formulas
+  bool lengths_are_usable() const
+  {
+    const double limit = geo == Background_geometry::HYPERBOLIC ? 600.0 : HUGE_VAL;
+    for(E e : m.edges()) if(!(len[e] > 0 && len[e] < limit)) return false;
+    return true;
+  }
+
   // true if a face violates a triangle inequality (its angles are Luo's extension (pi, 0, 0))
   bool has_degenerate_face() const
   {

@@ -211,6 +211,8 @@ struct Newton_options
   /// factorization (of an earlier Hessian), and factorize again only when they do not reach the forcing
   /// tolerance within their budget; false: one factorization per Newton step (the reference)
   bool reuse_factorization = true;
+  /// the largest change of a conformal factor in the first trial of a line search (see `line_search`)
+  double max_step = 8.0;
 };
 
 template <class Point_3>
@@ -270,6 +272,9 @@ private:
       if(!std::isfinite(g_[i])) { max_err = std::numeric_limits<double>::infinity(); return true; }
       max_err = (std::max)(max_err, std::abs(g_[i]));
     }
+    // a state with a zero, non-finite or (H^2) overflowing length is not a metric the flow can continue from:
+    // its error counts as infinite, so that the line search never accepts it
+    if(!eng_.lengths_are_usable()) max_err = std::numeric_limits<double>::infinity();
     return true;
   }
 
@@ -364,7 +369,13 @@ private:
     for(int i = 0; i < n_; ++i) slope0 += g_[i] * delta_[i];
     u_old_ = eng_.u;
     const double err_old = err;
-    t = 1.0;
+    // far from the solution (e.g. a vertex far from the others, lengths spread over orders of magnitude) the
+    // Newton direction can change u by hundreds: lengths under- or overflow, and the flips at such a trial
+    // point leave Penner coordinates that no later state can use. The first trial moves no u_i by more than
+    // `max_step` (a factor e^max_step on the lengths); near the solution the full step is taken.
+    double dmax = 0;
+    for(int i = 0; i < n_; ++i) dmax = (std::max)(dmax, std::abs(delta_[i]));
+    t = dmax > o_.max_step ? o_.max_step / dmax : 1.0;
     // accept t when the energy decreases (trapezoidal estimate from the directional derivatives; the energy
     // is convex for E^2 / H^2) or the max error decreases
     while(t > 1e-12) {
