@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include "demo_meshes.h"
@@ -90,7 +91,11 @@ double check_embedding(const std::string& name, const RF::Discrete_metric<Point_
   double min_trace = 1e300;
   for(std::size_t i = 0; i < ng; ++i) min_trace = (std::min)(min_trace, e.absolute_trace(i));
   CGAL_HC_CHECK_MSG(min_trace > 2, name << ": a generator is not hyperbolic (|trace| " << min_trace << ")");
-  CGAL_HC_CHECK_MSG(e.polished_max_curvature() <= 1e-16 && e.polished_max_curvature() <= e.input_max_curvature(),
+  // the polish (long double) goes below the rounding level of the double flow (1e-14 to 1e-13); its own last digits
+  // depend on the order of the sparse solver's operations (anchor.off: 0.9e-16 to 1.4e-16 between builds), so the
+  // bound is DBL_EPSILON, not a value measured on one machine
+  CGAL_HC_CHECK_MSG(e.polished_max_curvature() <= std::numeric_limits<double>::epsilon() &&
+                      e.polished_max_curvature() <= e.input_max_curvature(),
                     name << ": polished max |K| " << e.polished_max_curvature() << " (input " << e.input_max_curvature() << ")");
   // traces against the layer's double-precision development (conjugation invariant)
   const auto surface = r.hyperbolic_surface(CGAL::Hyperbolic_surface_2::parameters::require_smooth_metric(false));
