@@ -270,6 +270,12 @@ CGAL_HC_TEST_CASE(remesh_map_with_forced_flips)
   const auto mj = CGAL::Ricci_flow::hyperbolic_uniformization(joint);
   CGAL_HC_CHECK(mj.converged() && mj.flips().size() > 0);
   check_map("joint.off", joint, mj, 0.25);
+  // the locations need the mesh the metric was computed on
+  const DT tj = DT::from_surface_triangulation(mj.hyperbolic_surface());
+  CGAL_HC_CHECK_THROWS(HSM::input_locations(tj, in, mj), CGAL::Invalid_input_error);
+  Mesh joint_flipped = with_flipped_edges(joint, 1, 5);
+  CGAL_HC_CHECK_THROWS(HSM::input_locations(tj, joint_flipped, mj), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK(joint_flipped.number_of_faces() == joint.number_of_faces());
 }
 
 CGAL_HC_TEST_CASE(ideal_map_flip_twice_is_identity)
@@ -324,7 +330,7 @@ CGAL_HC_TEST_CASE(ideal_map_flip_twice_is_identity)
   CGAL_HC_CHECK_MSG(worst < 1e-12, "flipping twice moves a point by " << worst << " of the diagonal");
   // a replay that does not end at the given triangulation is refused
   std::vector<Mesh::Edge_index> once(1, Mesh::Edge_index(0));
-  CGAL_HC_CHECK_THROWS(Map(in, len, std::vector<Mesh::Edge_index>(), once, u, in), CGAL::Numerical_error);
+  CGAL_HC_CHECK_THROWS(Map(in, len, std::vector<Mesh::Edge_index>(), once, u, in), CGAL::Invalid_input_error);
 }
 
 /// `test_Hyperbolic_surface_mesh_2 --remesh-all-demo-meshes`: every closed demo mesh of genus >= 2 (not run by

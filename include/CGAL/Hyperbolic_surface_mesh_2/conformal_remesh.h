@@ -72,6 +72,8 @@ Ideal_surface_map<Point_3> ideal_surface_map(const TriangleMesh& tm, const Discr
 {
   typedef typename Discrete_Ricci_flow::Discrete_metric<Point_3>::Mesh Mesh;
   namespace DRF = Discrete_Ricci_flow::internal;
+  if(metric.background_geometry() != Discrete_Ricci_flow::Background_geometry::HYPERBOLIC)
+    throw Invalid_input_error("input_locations: the metric has no hyperbolic background");
   const auto vpm = get_const_property_map(CGAL::vertex_point, tm);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm);
   std::vector<typename Mesh::Vertex_index> vmap;
@@ -101,7 +103,8 @@ Ideal_surface_map<Point_3> ideal_surface_map(const TriangleMesh& tm, const Discr
   input face (whose chord triangle at u = 0 is the input triangle); the initial geometric flips
   (`metric.initial_flips()`) are undone by unfolding. Every location is a convex combination of the corners of
   an input face, so every output vertex lies on the input surface, whether the flow flipped or not.
-  \throws CGAL::Numerical_error if the metric's flips do not lead from `tm` to its intrinsic mesh.
+  \throws CGAL::Invalid_input_error if `metric` is not a hyperbolic metric computed on `tm` (its flips do not
+  lead from `tm` to its intrinsic mesh, or the sizes differ) or `t` is not a triangulation of its surface.
 */
 template <class DT, class TriangleMesh, class Point_3>
 std::vector<Mesh_location> input_locations(const DT& t, const TriangleMesh& tm,

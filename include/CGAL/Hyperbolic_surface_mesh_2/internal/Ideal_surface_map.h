@@ -69,7 +69,7 @@ public:
     order), `input_lengths` its Euclidean edge lengths (indexed by edge), `initial_flips` the metric-preserving
     flips and `flips` the Ptolemy flips, in order, `u` the final conformal factors, `final_mesh` the flow's
     intrinsic triangulation. Replays the flips on a copy of `input` and checks that they end at `final_mesh`
-    (`CGAL::Numerical_error` otherwise).
+    (`CGAL::Invalid_input_error` otherwise, as for sizes that do not match).
   */
   Ideal_surface_map(const Mesh& input, const std::vector<double>& input_lengths,
                     const std::vector<Edge_index>& initial_flips, const std::vector<Edge_index>& flips,
@@ -111,14 +111,15 @@ public:
         Discrete_Ricci_flow::internal::flip_connectivity(m, e);
       }
     }
-    // the replay must end at the flow's triangulation (same corners in the same order)
-    if(m.number_of_faces() != final_mesh.number_of_faces())
-      throw Numerical_error("Ideal_surface_map: the replayed flips do not give the flow's triangulation");
+    // the replay must end at the flow's triangulation (same corners in the same order): otherwise the metric
+    // is not one of this mesh
+    const char* other = "Ideal_surface_map: the flips replayed on the input do not give the metric's triangulation "
+                        "(the metric was not computed on this mesh)";
+    if(m.number_of_faces() != final_mesh.number_of_faces()) throw Invalid_input_error(other);
     for(Face_index f : m.faces()) {
       Halfedge_index a = m.halfedge(f), b = final_mesh.halfedge(f);
       for(int i = 0; i < 3; ++i, a = m.next(a), b = final_mesh.next(b))
-        if(std::size_t(m.source(a)) != std::size_t(final_mesh.source(b)))
-          throw Numerical_error("Ideal_surface_map: the replayed flips do not give the flow's triangulation");
+        if(std::size_t(m.source(a)) != std::size_t(final_mesh.source(b))) throw Invalid_input_error(other);
     }
     final_corners_.resize(m.number_of_faces());
     for(Face_index f : m.faces()) {
