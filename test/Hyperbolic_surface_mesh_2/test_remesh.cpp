@@ -333,6 +333,58 @@ CGAL_HC_TEST_CASE(ideal_map_flip_twice_is_identity)
   CGAL_HC_CHECK_THROWS(Map(in, len, std::vector<Mesh::Edge_index>(), once, u, in), CGAL::Invalid_input_error);
 }
 
+CGAL_HC_TEST_CASE(ideal_map_circumcircle_to_circumcircle)
+{
+  // The map of a final face to its input face is the radial projection between their chord planes in R^{2,1},
+  // which keeps the light cone: it maps the circumcircle of the final chord triangle (sides 2 sinh(l / 2) from
+  // the metric's lengths) to the circumcircle of the input triangle (the input lengths). A wrong power of
+  // e^{u_i} in the weights breaks this. Points of the circumcircle in barycentric coordinates:
+  // (a^2 / t1, b^2 / t2, c^2 / t3) with t1 + t2 + t3 = 0 (a, b, c the sides opposite the corners).
+  const Mesh in = read("eight.off");
+  const auto metric = CGAL::Ricci_flow::hyperbolic_uniformization(in, CGAL::parameters::do_flip(false));
+  CGAL_HC_CHECK(metric.converged() && metric.flips().empty());
+  Mesh m0;
+  const auto map = HSM::internal::ideal_surface_map(in, metric, m0);
+  const auto& im = metric.intrinsic_mesh();
+  double worst = 0, spread = 0;
+  for(auto f : im.faces()) {
+    // side opposite corner i: the halfedge from corner i+1 to corner i+2
+    Mesh::Halfedge_index hs[3];
+    hs[0] = im.halfedge(f); hs[1] = im.next(hs[0]); hs[2] = im.next(hs[1]);
+    long double chord2[3], input2[3];
+    for(int i = 0; i < 3; ++i) {
+      const auto h = hs[(i + 1) % 3];
+      const long double c = 2 * std::sinh(0.5L * metric.length(h));
+      chord2[i] = c * c;
+      input2[i] = CGAL::squared_distance(in.point(im.source(h)), in.point(im.target(h)));
+    }
+    for(long double s : {0.5L, 2.0L, -3.0L}) {
+      const long double t[3] = {1, s, -1 - s};
+      std::array<long double, 3> beta;
+      for(int i = 0; i < 3; ++i) beta[i] = chord2[i] / t[i];
+      const auto w = map.from_final(std::size_t(f), beta).w;
+      // the circumcircle equation of the input triangle, relative to its terms
+      long double e = 0, scale = 0;
+      for(int i = 0; i < 3; ++i) {
+        const long double term = input2[i] * w[(i + 1) % 3] * w[(i + 2) % 3];
+        e += term; scale += std::abs(term);
+      }
+      worst = (std::max)(worst, double(std::abs(e) / scale));
+      // without e^{u_i} the weights would be beta: how far that is from the input circumcircle (the test's power)
+      long double e0 = 0, scale0 = 0;
+      for(int i = 0; i < 3; ++i) {
+        const long double term = input2[i] * beta[(i + 1) % 3] * beta[(i + 2) % 3];
+        e0 += term; scale0 += std::abs(term);
+      }
+      spread = (std::max)(spread, double(std::abs(e0) / scale0));
+    }
+  }
+  std::cout << "  circumcircle equation of the input faces at the images: " << worst
+            << " (weights without e^u: " << spread << ")" << std::endl;
+  CGAL_HC_CHECK_MSG(worst < 1e-12, "the circumcircle of a final face is not mapped to the input circumcircle: " << worst);
+  CGAL_HC_CHECK_MSG(spread > 1e-3, "the conformal factors of eight.off are too uniform for this check: " << spread);
+}
+
 /// `test_Hyperbolic_surface_mesh_2 --remesh-all-demo-meshes`: every closed demo mesh of genus >= 2 (not run by
 /// CI: minutes); returns non-zero if a remesh fails or a vertex is off the surface by more than 1e-9
 int remesh_all_demo_meshes()

@@ -132,18 +132,21 @@ public:
   std::size_t number_of_flips() const { return steps_.size(); }
 
   /// The point of the final face `f` with projective coordinates `beta` with respect to the hyperboloid lifts
-  /// of its corners (in halfedge order), as weights on the final decoration mapped to the decoration at u = 0.
+  /// of its corners (in halfedge order), as weights beta_i e^{u_i} on the decoration at u = 0, scaled so that
+  /// the largest is 1 in absolute value (signs kept: a point outside the face has a negative coordinate;
+  /// `to_input()` takes points of the face).
   Face_point from_final(std::size_t f, const std::array<long double, 3>& beta) const
   {
+    if(f >= faces_) throw Invalid_input_error("Ideal_surface_map: a point is not in a face of the mesh");
     Face_point p;
     p.face = f;
     long double lg[3], mx = -std::numeric_limits<long double>::infinity();
     for(int i = 0; i < 3; ++i) {
-      lg[i] = beta[i] > 0 ? std::log(beta[i]) + (long double)(u_[final_corners_[f][i]]) : -std::numeric_limits<long double>::infinity();
+      lg[i] = beta[i] != 0 ? std::log(std::abs(beta[i])) + (long double)(u_[final_corners_[f][i]]) : -std::numeric_limits<long double>::infinity();
       mx = (std::max)(mx, lg[i]);
     }
-    if(!std::isfinite(mx)) return p; // no positive coordinate: the centre of the face
-    for(int i = 0; i < 3; ++i) p.w[i] = std::isfinite(lg[i]) ? std::exp(lg[i] - mx) : 0.0L;
+    if(!std::isfinite(mx)) return p; // no non-zero coordinate: the centre of the face
+    for(int i = 0; i < 3; ++i) p.w[i] = std::isfinite(lg[i]) ? (beta[i] < 0 ? -1 : 1) * std::exp(lg[i] - mx) : 0.0L;
     return p;
   }
 
