@@ -77,7 +77,7 @@ int main(int argc, char** argv)
         HSMP::use_Chew(chew, HSMP::maximum_number_of_insertions(max_ins, CGAL::parameters::callback(progress))))));
     if(!quiet) std::cerr << "\n";
     std::cout << "genus " << rep.genus << "; Ricci flow " << rep.seconds_flow << " s ("
-              << (rep.flow_used_flips ? "with intrinsic flips: output vertices on the intrinsic faces' chords" : "output vertices on the input faces")
+              << (rep.flow_used_flips ? "with intrinsic flips" : "input connectivity")
               << "); refinement " << rep.seconds_refinement << " s\n" << rep.refinement << "\n";
     if(!CGAL::IO::write_polygon_mesh(out_file, out, CGAL::parameters::stream_precision(17))) {
       std::cerr << "hyperbolic_remesh: cannot write " << out_file << "\n";

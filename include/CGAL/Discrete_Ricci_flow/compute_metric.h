@@ -76,6 +76,7 @@ public:
     lengths_ = mesh_.template property_map<Edge_index, double>("e:length").first;
     geo_ = o.geo_; u_ = o.u_; stats_ = o.stats_; target_ = o.target_; genus_ = o.genus_;
     input_valid_ = o.input_valid_;
+    initial_flips_ = o.initial_flips_; flips_ = o.flips_;
     return *this;
   }
 
@@ -95,6 +96,21 @@ public:
   long genus() const { return genus_; }
   /// true if the Penner lengths on the input connectivity satisfy all triangle inequalities
   bool input_connectivity_is_valid() const { return input_valid_; }
+  /*!
+    The flips that turned the input connectivity into `intrinsic_mesh()`, in order: first the metric-preserving
+    (Euclidean) Delaunay flips of the input (`initial_flips()`, see `parameters::geometric_initial_flips()`),
+    then the Ptolemy flips of the flow (`flips()`, `statistics().number_of_flips` of them). Each is an edge of
+    `intrinsic_mesh()`; replaying them with `internal::flip_connectivity()` on the input connectivity (vertex
+    `i` = the `i`-th vertex, faces in `faces(tm)` order) reproduces every intermediate triangulation with the
+    same indices. A geometric flip keeps the piecewise-linear Euclidean metric of the input; a Ptolemy flip of
+    edge (a b) between faces (a b c), (b a d) gives the new edge the Penner coordinate
+    lambda_cd = (lambda_ca lambda_db + lambda_ad lambda_bc) / lambda_ab (at u = 0, lambda = half the input
+    length) and keeps the decorated ideal hyperbolic surface (Gillespie-Springborn-Crane 2021). Set by
+    `compute_metric()` (and so by `hyperbolic_uniformization()`, `flat_metric()`); empty otherwise.
+  */
+  const std::vector<Edge_index>& initial_flips() const { return initial_flips_; }
+  /// the Ptolemy flips of the flow, in order (see `initial_flips()`)
+  const std::vector<Edge_index>& flips() const { return flips_; }
 
   /// the corner angle at the corner opposite to `h` in `face(h)` (computed from the lengths)
   double angle_opposite(Halfedge_index h) const
@@ -152,6 +168,7 @@ private:
   Flow_statistics stats_;
   long genus_ = 0;
   bool input_valid_ = true;
+  std::vector<Edge_index> initial_flips_, flips_;
 };
 
 namespace internal {
@@ -166,6 +183,12 @@ struct Metric_access
                   const std::vector<double>& target, long genus, bool input_valid)
   {
     m.geo_ = geo; m.u_ = u; m.target_ = target; m.genus_ = genus; m.input_valid_ = input_valid;
+  }
+  template <class P>
+  static void set_flips(Discrete_metric<P>& m, const std::vector<typename Discrete_metric<P>::Edge_index>& initial,
+                        const std::vector<typename Discrete_metric<P>::Edge_index>& flow)
+  {
+    m.initial_flips_ = initial; m.flips_ = flow;
   }
   /// creates the length property (all zero) and returns it
   template <class P>
@@ -578,6 +601,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   const double du = scheme == Scheme::VERTEX_SCALING ? (euclidean ? 0.0 : -std::log(unit)) : (euclidean ? std::log(unit) : 0.0);
   for(double& x : u) x += du;
   internal::Metric_access::set(res, geo, u, target_k, topo.genus, valid);
+  internal::Metric_access::set_flips(res, init.flips, eng.flip_log);
   st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if(options.verbose)
     std::cerr << "Ricci flow: " << to_string(st.status) << " after " << st.iterations << " iterations, max error "

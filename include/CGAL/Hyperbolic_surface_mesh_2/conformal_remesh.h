@@ -3,7 +3,8 @@
 //
 // Conformal remeshing of a closed triangle mesh of genus >= 2: hyperbolic uniformization (discrete Ricci flow),
 // Delaunay refinement on the hyperbolic surface, and the map of every output vertex back to a point of the
-// input mesh (input face + barycentric coordinates of the straight Klein triangle).
+// input mesh (input face + barycentric coordinates), through the decorated ideal hyperbolic surface of the flow
+// (internal/Ideal_surface_map.h), which undoes the flow's flips.
 #ifndef CGAL_HYPERBOLIC_SURFACE_MESH_2_CONFORMAL_REMESH_H
 #define CGAL_HYPERBOLIC_SURFACE_MESH_2_CONFORMAL_REMESH_H
 
@@ -12,6 +13,7 @@
 #include <CGAL/Hyperbolic_surface_2/Hyperbolic_surface_triangulation.h>
 #include <CGAL/Hyperbolic_surface_mesh_2/Delaunay_triangulation_on_surface.h>
 #include <CGAL/Hyperbolic_surface_mesh_2/refine_surface_mesh.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/Ideal_surface_map.h>
 
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
@@ -49,9 +51,8 @@ struct Mesh_location
 struct Remesh_report
 {
   Ricci_flow::Flow_statistics flow;
-  /// the flow needed intrinsic (Ptolemy) flips: the intrinsic faces are then not all input faces, and the
-  /// output vertices lie on the straight triangles spanned by the intrinsic faces' vertices (near the input
-  /// surface, not on it). False: every output vertex is a point of an input face.
+  /// the flow needed intrinsic (Ptolemy) flips, so the intrinsic faces are not all input faces; the output
+  /// vertices are mapped to the input faces through the flips all the same (see `input_locations()`)
   bool flow_used_flips = false;
   Refinement_statistics refinement;
   std::vector<Mesh_location> locations; ///< indexed like the vertices of the output mesh
@@ -61,23 +62,94 @@ struct Remesh_report
   std::shared_ptr<const Delaunay_triangulation_on_surface<> > surface;
 };
 
+namespace internal {
+
+/// the map of `metric` (computed on `tm` with its default vertex point and index maps) back to `tm`; `m0`
+/// receives the input connectivity as the flow copied it (faces in `faces(tm)` order)
+template <class TriangleMesh, class Point_3>
+Ideal_surface_map<Point_3> ideal_surface_map(const TriangleMesh& tm, const Discrete_Ricci_flow::Discrete_metric<Point_3>& metric,
+                                             typename Discrete_Ricci_flow::Discrete_metric<Point_3>::Mesh& m0)
+{
+  typedef typename Discrete_Ricci_flow::Discrete_metric<Point_3>::Mesh Mesh;
+  namespace DRF = Discrete_Ricci_flow::internal;
+  if(metric.background_geometry() != Discrete_Ricci_flow::Background_geometry::HYPERBOLIC)
+    throw Invalid_input_error("input_locations: the metric has no hyperbolic background");
+  const auto vpm = get_const_property_map(CGAL::vertex_point, tm);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  std::vector<typename Mesh::Vertex_index> vmap;
+  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor, typename Mesh::Edge_index> > corr;
+  m0.clear();
+  DRF::copy_connectivity(tm, vpm, vim, m0, vmap);
+  const std::vector<double> len = DRF::input_lengths(tm, vpm, vim, CGAL::internal_np::Param_not_found(), m0, vmap, corr);
+  return Ideal_surface_map<Point_3>(m0, len, metric.initial_flips(), metric.flips(), metric.conformal_factors(),
+                                    metric.intrinsic_mesh());
+}
+
+} // namespace internal
+
 /*!
   \ingroup PkgHyperbolicSurfaceMesh2Ref
-  The location on the input mesh of every vertex of `t`, a triangulation built with
-  `Delaunay_triangulation_on_surface::from_surface_triangulation(st)` from a surface triangulation on `mesh`:
-  the reference face of the vertex is the input face (same index in `faces(mesh)`), and the point in its chart
-  has barycentric coordinates in the straight Klein image of the chart's triangle (geodesic triangles are
-  straight triangles in the Klein model, so these projective coordinates are the hyperbolic-to-Euclidean map:
-  a geodesic of the hyperbolic face becomes a straight segment of the input face). Indexed by vertex index.
+  The location on the input mesh `tm` of every vertex of `t`, a triangulation built with
+  `Delaunay_triangulation_on_surface::from_surface_triangulation()` from the surface triangulation of
+  `metric = CGAL::Ricci_flow::hyperbolic_uniformization(tm, ...)` (vertex scaling, its intrinsic mesh and edge
+  lengths; with or without flips, default vertex point and index maps of `tm`). Indexed by vertex index.
+
+  The map is the one of the flow's discrete conformal equivalence (Gillespie, Springborn and Crane 2021): a
+  point of an intrinsic face with projective coordinates beta with respect to the hyperboloid lifts of its
+  corners is the point with weights beta_i e^{u_i} on the corners of the decorated ideal triangle at u = 0
+  (`metric.conformal_factors()`); the Ptolemy flips of the flow (`metric.flips()`), which keep that ideal
+  surface, are undone in reverse order with the Gram matrix of the light-like vectors of each flipped
+  quadrilateral; on the input connectivity the normalized weights are the barycentric coordinates of the
+  input face (whose chord triangle at u = 0 is the input triangle); the initial geometric flips
+  (`metric.initial_flips()`) are undone by unfolding. Every location is a convex combination of the corners of
+  an input face, so every output vertex lies on the input surface, whether the flow flipped or not.
+  \throws CGAL::Invalid_input_error if `metric` is not a hyperbolic metric computed on `tm` (its flips do not
+  lead from `tm` to its intrinsic mesh, or the sizes differ) or `t` is not a triangulation of its surface.
 */
-template <class DT>
-std::vector<Mesh_location> input_locations(const DT& t)
+template <class DT, class TriangleMesh, class Point_3>
+std::vector<Mesh_location> input_locations(const DT& t, const TriangleMesh& tm,
+                                           const Discrete_Ricci_flow::Discrete_metric<Point_3>& metric)
 {
-  std::vector<Mesh_location> r(t.vertex_capacity());
-  for(std::size_t v : t.vertices()) {
+  typedef typename Discrete_Ricci_flow::Discrete_metric<Point_3>::Mesh Mesh;
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  Mesh m0;
+  const internal::Ideal_surface_map<Point_3> map = internal::ideal_surface_map(tm, metric, m0);
+  // projective coordinates: Klein barycentric coordinates k_i of the chart divided by the hyperboloid height
+  // (1 + |z_i|^2) / (1 - |z_i|^2) of the corner's Poincare lift z_i
+  std::vector<internal::Face_point> pts;
+  const std::vector<std::size_t> vs = t.vertices();
+  pts.reserve(vs.size());
+  for(std::size_t v : vs) {
     const auto& ref = t.vertex_reference(v);
-    r[v].face = ref.reference_face;
-    r[v].barycentric = t.reference().klein_barycentric(ref.reference_face, ref.point);
+    const auto k = t.reference().klein_barycentric(ref.reference_face, ref.point);
+    const auto& z = t.reference().faces[ref.reference_face].z;
+    std::array<long double, 3> beta;
+    for(int i = 0; i < 3; ++i) {
+      const long double n = (long double)(CGAL::to_double(z[i].x())) * CGAL::to_double(z[i].x()) +
+                            (long double)(CGAL::to_double(z[i].y())) * CGAL::to_double(z[i].y());
+      beta[i] = k[i] * (1 - n) / (1 + n);
+    }
+    pts.push_back(map.from_final(ref.reference_face, beta));
+  }
+  map.to_input(pts);
+  // barycentric coordinates with respect to the corners of halfedge(f) in tm (the copy has the same corners)
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs;
+  for(auto f : faces(tm)) fs.push_back(f);
+  std::vector<Mesh_location> r(t.vertex_capacity());
+  for(std::size_t i = 0; i < vs.size(); ++i) {
+    const std::size_t f = pts[i].face;
+    std::size_t c0[3], c1[3];
+    auto a = m0.halfedge(typename Mesh::Face_index(typename Mesh::size_type(f)));
+    auto b = halfedge(fs[f], tm);
+    for(int j = 0; j < 3; ++j, a = m0.next(a), b = next(b, tm)) { c0[j] = std::size_t(m0.source(a)); c1[j] = get(vim, source(b, tm)); }
+    Mesh_location& l = r[vs[i]];
+    l.face = f;
+    for(int k = 0; k < 3; ++k) {
+      int j = 0;
+      while(j < 3 && c0[j] != c1[k]) ++j;
+      if(j == 3) throw Numerical_error("input_locations: the copied input face has other corners than the input face");
+      l.barycentric[k] = double(pts[i].w[j]);
+    }
   }
   return r;
 }
@@ -118,13 +190,12 @@ bool satisfies_triangle_inequalities(const Metric& m)
   Conformal remeshing of a closed, connected, manifold triangle mesh `tm` of genus g >= 2 into `out`:
   1. the hyperbolic uniformization metric (`CGAL::Ricci_flow::hyperbolic_uniformization`), first without
      intrinsic flips (so that the intrinsic faces are the input faces); if that flow does not converge, with
-     Ptolemy flips (`report.flow_used_flips`: the output vertices then lie on the straight triangles spanned
-     by the vertices of the intrinsic faces, not exactly on the input surface);
+     Ptolemy flips (`report.flow_used_flips`);
   2. the Delaunay triangulation of the hyperbolic surface with the input vertices, then generalized Ruppert
      (default) or Chew refinement (`parameters::use_Chew(true)`) with the options of `refine_Ruppert()`
      (`maximum_circumradius` required);
-  3. every output vertex mapped to the input surface (`input_locations()`), the output faces added to `out`
-     (a `CGAL::Surface_mesh<Point_3>`, cleared first).
+  3. every output vertex mapped to a point of an input face (`input_locations()`, which undoes the flips of
+     the flow), the output faces added to `out` (a `CGAL::Surface_mesh<Point_3>`, cleared first).
   The output is a closed manifold mesh of genus g whose vertices lie on the input surface when the refinement
   ended with a simplicial complex (`report.refinement.simplicial_complex`); otherwise `CGAL::Numerical_error`.
   Throws `CGAL::Invalid_mesh_error` for an open, non-manifold, non-triangle or genus < 2 input.
@@ -171,14 +242,15 @@ Remesh_report conformal_remesh(const TriangleMesh& tm, CGAL::Surface_mesh<Point_
                           std::string(to_string(rep.refinement.status)) + ")");
   // 3. output
   t0 = Clock::now();
-  const std::vector<Mesh_location> loc = input_locations(t);
-  std::vector<typename Mesh::Face_index> input_faces;
-  for(auto f : faces(im)) input_faces.push_back(f);
+  const std::vector<Mesh_location> loc = input_locations(t, tm, metric);
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> input_faces;
+  for(auto f : faces(tm)) input_faces.push_back(f);
+  const auto vpm = get_const_property_map(CGAL::vertex_point, tm);
   out.clear();
   std::vector<typename Mesh::Vertex_index> vmap(t.vertex_capacity());
   for(std::size_t v : t.vertices()) {
-    const auto h0 = halfedge(input_faces[loc[v].face], im);
-    const Point_3 p[3] = {im.point(source(h0, im)), im.point(source(next(h0, im), im)), im.point(source(prev(h0, im), im))};
+    const auto h0 = halfedge(input_faces[loc[v].face], tm);
+    const Point_3 p[3] = {get(vpm, source(h0, tm)), get(vpm, source(next(h0, tm), tm)), get(vpm, source(prev(h0, tm), tm))};
     const auto& b = loc[v].barycentric;
     vmap[v] = out.add_vertex(Point_3(b[0] * p[0].x() + b[1] * p[1].x() + b[2] * p[2].x(),
                                      b[0] * p[0].y() + b[1] * p[1].y() + b[2] * p[2].y(),

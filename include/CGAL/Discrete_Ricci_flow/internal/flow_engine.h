@@ -26,6 +26,27 @@ namespace CGAL {
 namespace Discrete_Ricci_flow {
 namespace internal {
 
+/// The connectivity change of a flip of edge e = (a b), faces (a b c) and (b a d), with h = halfedge(e): a -> b,
+/// h1 = next(h), h2 = next(h1), o = opposite(h), o1 = next(o), o2 = next(o1). Afterwards h: d -> c and
+/// o: c -> d; face(h) is (h, h2, o1) = (d c a) and face(o) is (o, o2, h1) = (c d b), with halfedge(face(h)) = h
+/// and halfedge(face(o)) = o; no other element changes. Replaying a flip log with this function on a copy of
+/// the mesh the log started from reproduces every intermediate mesh exactly (same indices).
+template <class Mesh>
+void flip_connectivity(Mesh& m, typename Mesh::Edge_index e)
+{
+  const auto h = m.halfedge(e), o = m.opposite(h);
+  const auto h1 = m.next(h), h2 = m.next(h1), o1 = m.next(o), o2 = m.next(o1);
+  const auto fh = m.face(h), fo = m.face(o);
+  const auto a = m.target(o), b = m.target(h), c = m.target(h1), d = m.target(o1);
+  if(m.halfedge(a) == o) m.set_halfedge(a, h2);
+  if(m.halfedge(b) == h) m.set_halfedge(b, o2);
+  m.set_target(h, c); m.set_target(o, d);
+  m.set_next(h, h2); m.set_next(h2, o1); m.set_next(o1, h);
+  m.set_next(o, o2); m.set_next(o2, h1); m.set_next(h1, o);
+  m.set_face(o1, fh); m.set_face(h1, fo);
+  m.set_halfedge(fh, h); m.set_halfedge(fo, o);
+}
+
 template <class Point_3>
 class Flow_engine
 {
@@ -150,7 +171,6 @@ public:
     const H h = m.halfedge(e), o = m.opposite(h);
     const H h1 = m.next(h), h2 = m.next(h1), o1 = m.next(o), o2 = m.next(o1);
     const F fh = m.face(h), fo = m.face(o);
-    const V a = m.target(o), b = m.target(h), c = m.target(h1), d = m.target(o1);
     // h1: b->c, h2: c->a, o1: a->d, o2: d->b
     const double lab = edge_data[e], lbc = edge_data[m.edge(h1)], lca = edge_data[m.edge(h2)],
                  lad = edge_data[m.edge(o1)], ldb = edge_data[m.edge(o2)];
@@ -163,14 +183,7 @@ public:
     } else
       edge_data[e] = (lca * ldb + lad * lbc) / lab;
     flip_log.push_back(e);
-    // rewire: h: d->c in face (h, h2, o1); o: c->d in face (o, o2, h1)
-    if(m.halfedge(a) == o) m.set_halfedge(a, h2);
-    if(m.halfedge(b) == h) m.set_halfedge(b, o2);
-    m.set_target(h, c); m.set_target(o, d);
-    m.set_next(h, h2); m.set_next(h2, o1); m.set_next(o1, h);
-    m.set_next(o, o2); m.set_next(o2, h1); m.set_next(h1, o);
-    m.set_face(o1, fh); m.set_face(h1, fo);
-    m.set_halfedge(fh, h); m.set_halfedge(fo, o);
+    flip_connectivity(m, e);
     len[e] = edge_length(e);
     update_face_angles(fh); update_face_angles(fo);
     ++flips; ++pattern_version;
