@@ -3,9 +3,9 @@
 //   genus >= 2: hyperbolic metric (max |K| <= 1e-10 recomputed by the shared layer, area 4 pi (g - 1)),
 //               embedding with every |trace| > 2 and the relator defect <= 1e-8 where it is well conditioned;
 //   genus 1:    flat metric (max |K| <= 1e-10) and its lattice parameter tau in the fundamental region;
-//   genus 0:    spherical map: every converged map has its points on the unit sphere, angle sums 2 pi,
-//               area 4 pi, no flipped face, centre of mass at the origin; the number of converged maps has a
-//               floor (the meshes that fail are listed, see the manual's limitations).
+//   genus 0:    spherical map: every mesh gives a valid map, each with its
+//               points on the unit sphere, angle sums 2 pi, area 4 pi, no flipped face, centre of mass at the
+//               origin and chords conformally consistent with the input lengths.
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -16,6 +16,7 @@
 #include "cgal_hc_test.h"
 
 #include <algorithm>
+#include <map>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -95,15 +96,69 @@ CGAL_HC_TEST_CASE(demo_meshes_genus_1)
   }
 }
 
+// Conformal consistency of a spherical map: the chords 2 sin(l / 2) of `metric()` are a vertex scaling of the
+// input lengths on the input edges that are still edges (Ptolemy flips keep the Penner coordinates of the
+// other arcs): chord_ij = e^{(u_i + u_j) / 2} |P_i - P_j|. Each input face whose three edges are still edges
+// gives u_i = r_ij + r_ik - r_jk (r = log(chord / length)); returns the largest spread of these estimates of
+// one vertex, and in `faces` the number of such faces. Faces with a chord below `min_chord` are left out (the
+// long double points resolve a chord of 1e-13 to about 1e-6 only)
+double conformal_factor_spread(const Mesh& input, const RF::Spherical_map<Point_3>& s, double min_chord, std::size_t& faces)
+{
+  const auto& sm = s.metric().intrinsic_mesh();
+  std::map<std::pair<std::size_t, std::size_t>, int> count;
+  std::map<std::pair<std::size_t, std::size_t>, double> chord;
+  for(auto e : sm.edges()) {
+    std::size_t a = sm.vertex(e, 0), b = sm.vertex(e, 1);
+    if(a > b) std::swap(a, b);
+    ++count[{a, b}];
+    chord[{a, b}] = 2 * std::sin(0.5 * s.metric().length(e));
+  }
+  auto r = [&](std::size_t a, std::size_t b, bool& ok) {
+    if(a > b) std::swap(a, b);
+    const auto it = count.find({a, b});
+    if(it == count.end() || it->second != 1) { ok = false; return 0.0; }
+    const double len = std::sqrt(CGAL::to_double(CGAL::squared_distance(input.point(Mesh::Vertex_index(Mesh::size_type(a))),
+                                                                        input.point(Mesh::Vertex_index(Mesh::size_type(b))))));
+    return std::log(chord[{a, b}] / len);
+  };
+  std::vector<double> lo(input.number_of_vertices(), 1e300), hi(input.number_of_vertices(), -1e300);
+  faces = 0;
+  for(auto f : input.faces()) {
+    const auto h = input.halfedge(f);
+    const std::size_t v[3] = {input.source(h), input.target(h), input.target(input.next(h))};
+    bool ok = true;
+    const double r01 = r(v[0], v[1], ok), r12 = r(v[1], v[2], ok), r20 = r(v[2], v[0], ok);
+    if(!ok) continue;
+    auto c = [&](std::size_t a, std::size_t b) { return chord[{(std::min)(a, b), (std::max)(a, b)}]; };
+    if((std::min)({c(v[0], v[1]), c(v[1], v[2]), c(v[2], v[0])}) < min_chord) continue;
+    ++faces;
+    const double u[3] = {r01 + r20 - r12, r01 + r12 - r20, r12 + r20 - r01};
+    for(int i = 0; i < 3; ++i) { lo[v[i]] = (std::min)(lo[v[i]], u[i]); hi[v[i]] = (std::max)(hi[v[i]], u[i]); }
+  }
+  double spread = 0;
+  for(std::size_t i = 0; i < lo.size(); ++i) if(hi[i] >= lo[i]) spread = (std::max)(spread, hi[i] - lo[i]);
+  return spread;
+}
+
+// Every closed genus-0 demo mesh (55) gives a valid spherical map; each map is checked: points on the unit sphere, angle sums
+// of the metric 2 pi, area 4 pi, no flipped face (exact orientation of the double points), centre of mass at
+// the origin, conformal consistency with the input lengths. Regression for cow, dino, man (the metric computed
+// from the rounded points: angle errors 5e-7 to 2e-6) and camel (the first puncture's flow converged with a
+// map of 3156 flipped faces, its limbs compressed below the layout's resolution, and the other punctures were
+// not tried) and dragknob (every puncture's flow stagnates at its rounding floor, max |K| 1e-10 to 1e-9, or
+// fails: now accepted when stagnated below 1e-8).
 CGAL_HC_TEST_CASE(demo_meshes_genus_0_spherical)
 {
   const auto meshes = demo_meshes(0, 0);
-  CGAL_HC_CHECK(meshes.size() >= 50);
+  CGAL_HC_CHECK(meshes.size() >= 55);
   std::size_t converged = 0;
   std::string failed;
   for(const auto& nm : meshes) {
     try {
       const auto s = RF::spherical_uniformization(nm.second, CGAL::parameters::number_of_iterations(150));
+      CGAL_HC_CHECK_MSG(s.converged(), nm.first << ": flow " << RF::to_string(s.statistics().status) << ", max |K| "
+                                   << s.statistics().max_curvature_error << ", flipped faces " << s.number_of_flipped_faces()
+                                   << ", angle sum error " << s.max_angle_sum_error());
       if(!s.converged()) { failed += " " + nm.first; continue; }
       ++converged;
       double on_sphere = 0;
@@ -112,13 +167,19 @@ CGAL_HC_TEST_CASE(demo_meshes_genus_0_spherical)
       CGAL_HC_CHECK_MSG(on_sphere < 1e-12, nm.first << ": |X| - 1 = " << on_sphere);
       CGAL_HC_CHECK_MSG(k < 1e-8, nm.first << ": max |2 pi - angle sum| " << k);
       CGAL_HC_CHECK_MSG(std::abs(area - 4 * CGAL_PI) < 1e-8, nm.first << ": area " << area);
-      CGAL_HC_CHECK(s.number_of_flipped_faces() == 0);
-      CGAL_HC_CHECK(s.center_of_mass_norm() < 1e-10);
+      CGAL_HC_CHECK_MSG(s.number_of_flipped_faces() == 0, nm.first);
+      CGAL_HC_CHECK_MSG(s.center_of_mass_norm() < 1e-10, nm.first);
       CGAL_HC_CHECK(s.metric().intrinsic_mesh().number_of_vertices() == nm.second.number_of_vertices());
+      std::size_t faces = 0;
+      // measured: below 1e-9 on most meshes, 5e-5 on diplodocus (the flow's residual curvature, 1e-13,
+      // amplified by the layout across scales of 1e8); a map inconsistent with the input is off by far more
+      const double spread = conformal_factor_spread(nm.second, s, 1e-8, faces);
+      CGAL_HC_CHECK_MSG(spread < 1e-4, nm.first << ": conformal factors disagree by " << spread << " over " << faces << " faces");
+      CGAL_HC_CHECK_MSG(faces > 0, nm.first);
     } catch(const CGAL::Hyperbolic_geometry_error& e) {
+      CGAL_HC_CHECK_MSG(false, nm.first << ": " << e.what());
       failed += " " + nm.first + "(" + e.what() + ")";
     }
   }
-  std::cout << "  spherical maps: " << converged << " of " << meshes.size() << " converged; not:" << failed << std::endl;
-  CGAL_HC_CHECK_MSG(converged >= 50, converged << " of " << meshes.size());
+  std::cout << "  spherical maps: " << converged << " of " << meshes.size() << " valid; not:" << failed << std::endl;
 }
