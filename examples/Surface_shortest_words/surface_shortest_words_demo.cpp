@@ -7,10 +7,15 @@
 //    the tiling by lifts of the fundamental octagon and the generators;
 //  - on eight.off with the Ricci flow metric (if that package is present): the canonical system of shortest
 //    geodesic loops through p (thesis Theorem 2.6) and the fundamental polygon they bound, drawn in
-//    CGAL_HC_OUTPUT_DIR/geodesic_fundamental_polygon_eight.svg with its neighbouring translates.
+//    CGAL_HC_OUTPUT_DIR/geodesic_fundamental_polygon_eight.svg with its neighbouring translates; the loops
+//    inserted into a triangulation of the surface as chains of edges and the fundamental polygon as the
+//    faces of the cut surface, drawn in CGAL_HC_OUTPUT_DIR/geodesic_polygon_triangulation_eight.svg.
 // Usage: surface_shortest_words_demo [loop_steps] [seed]
 #include <CGAL/Surface_shortest_words.h>
 #include <CGAL/Surface_shortest_words/geodesic_canonical_system.h>
+#if __has_include(<CGAL/Discrete_Ricci_flow.h>)
+#include <CGAL/Surface_shortest_words/geodesic_system_triangulation.h>
+#endif
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
 #if __has_include(<CGAL/Discrete_Ricci_flow.h>)
@@ -221,6 +226,42 @@ int main(int argc, char** argv)
       const std::string svg_file = std::string(CGAL_HC_OUTPUT_DIR) + "/geodesic_fundamental_polygon_eight.svg";
       psvg.write(svg_file);
       std::cout << "wrote " << svg_file << "\n";
+
+      // the loops as edges of a triangulation of the surface, the polygon as the faces of the cut surface
+      const SSW::Geodesic_system_triangulation gt = SSW::geodesic_system_triangulation(s8, solver8, sys);
+      const auto& tr = gt.triangulation;
+      std::cout << "loops inserted as edges: " << tr.number_of_faces() << " faces (" << gt.vertices_inserted
+                << " vertices inserted); chain edges / lengths:";
+      for(std::size_t i = 0; i < gt.loop_edges.size(); ++i) std::cout << " " << gt.loop_edges[i].size() << " / " << gt.loop_lengths[i];
+      std::cout << "; cut surface V-E+F = " << gt.cut_euler_characteristic << ", boundary word "
+                << SSW::to_string(gt.boundary_word) << "\n";
+      std::map<std::pair<std::size_t, int>, std::size_t> loop_of; // edge (either side) -> loop
+      for(std::size_t i = 0; i < gt.loop_edges.size(); ++i)
+        for(const auto& e : gt.loop_edges[i]) {
+          loop_of[e] = i;
+          loop_of[std::make_pair(tr.neighbor(e.first, e.second), tr.mirror_index(e.first, e.second))] = i;
+        }
+      CGAL::Poincare_disk_svg_writer tsvg(900);
+      tsvg.add_unit_circle();
+      auto V = [&](const CGAL::Epick::Point_2& z) { return SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(z)); };
+      for(const auto& z : gt.polygon_face_points) {
+        std::vector<double> xy;
+        for(int c = 0; c < 3; ++c) { const Cplx w = V(z[c]); xy.push_back(w.real()); xy.push_back(w.imag()); }
+        tsvg.add_geodesic_polygon(xy, "#fff3d6", "#999999", 0.3);
+      }
+      for(std::size_t k = 0; k < gt.polygon_faces.size(); ++k)
+        for(int c = 0; c < 3; ++c) {
+          const auto it = loop_of.find(std::make_pair(gt.polygon_faces[k], c));
+          if(it == loop_of.end()) continue;
+          const Cplx z0 = V(gt.polygon_face_points[k][c]), z1 = V(gt.polygon_face_points[k][(c + 1) % 3]);
+          tsvg.add_geodesic_segment(z0.real(), z0.imag(), z1.real(), z1.imag(), side_colours[it->second], 2.5);
+        }
+      for(const auto& z : sys.polygon) { const Cplx w = V(z); tsvg.add_point(w.real(), w.imag(), "#000", 3); }
+      tsvg.add_text(20, 30, "eight.off (Ricci flow): the shortest geodesic loops as edges of the surface triangulation", 16);
+      tsvg.add_text(20, 52, "the faces of the surface cut along them: the fundamental polygon; a1 red, b1 blue, a2 green, b2 purple", 14);
+      const std::string tsvg_file = std::string(CGAL_HC_OUTPUT_DIR) + "/geodesic_polygon_triangulation_eight.svg";
+      tsvg.write(tsvg_file);
+      std::cout << "wrote " << tsvg_file << "\n";
     }
 #endif
   } catch(const std::exception& e) {

@@ -22,6 +22,7 @@
 #include <sstream>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -49,6 +50,29 @@ public:
   void clear() { std::fill(v_.begin(), v_.end(), -1); }
   void set(H h, int v) { v_.at(std::size_t(h)) = v; }
   int get(H h) const { return std::size_t(h) < v_.size() ? v_[std::size_t(h)] : -1; }
+};
+// a set of vertices: a vector of flags by index for Surface_mesh, a hash set for other graphs
+template <class TriangleMesh>
+class Vertex_flags
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor V;
+  std::unordered_set<V> s_;
+public:
+  explicit Vertex_flags(const TriangleMesh&) {}
+  void clear() { s_.clear(); }
+  void set(V v) { s_.insert(v); }
+  bool get(V v) const { return s_.count(v) > 0; }
+};
+template <class P>
+class Vertex_flags<CGAL::Surface_mesh<P> >
+{
+  typedef typename CGAL::Surface_mesh<P>::Vertex_index V;
+  std::vector<char> f_;
+public:
+  explicit Vertex_flags(const CGAL::Surface_mesh<P>& m) : f_(m.number_of_vertices() + m.number_of_removed_vertices(), 0) {}
+  void clear() { std::fill(f_.begin(), f_.end(), char(0)); }
+  void set(V v) { f_.at(std::size_t(v)) = 1; }
+  bool get(V v) const { return std::size_t(v) < f_.size() && f_[std::size_t(v)] != 0; }
 };
 } // namespace internal
 
@@ -194,7 +218,7 @@ public:
   Shortest_word_solver(const Surface& surface, vertex_descriptor base,
                        const std::vector<std::vector<halfedge_descriptor> >& generators,
                        const Shortest_word_options& options = Shortest_word_options())
-    : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options), exit_side_(surface.mesh())
+    : s_(surface), tm_(surface.mesh()), p_(base), gens_(generators), opt_(options), exit_side_(surface.mesh()), on_cut_(surface.mesh())
   {
     check_base();
     check_options(opt_.path_options);
@@ -255,7 +279,7 @@ public:
   */
   Shortest_word_solver(const Surface& surface, vertex_descriptor base,
                        const Shortest_word_options& options = Shortest_word_options())
-    : s_(surface), tm_(surface.mesh()), p_(base), opt_(options), exit_side_(surface.mesh())
+    : s_(surface), tm_(surface.mesh()), p_(base), opt_(options), exit_side_(surface.mesh()), on_cut_(surface.mesh())
   {
     check_base();
     check_options(opt_.path_options);
@@ -483,9 +507,9 @@ public:
     if(!loop.front().on_vertex || loop.front().v != p_ || !loop.back().on_vertex || loop.back().v != p_)
       throw Invalid_path_error("Shortest_word_solver: the loop must start and end at the base vertex");
     Word_result<TriangleMesh> r;
-    r.loop = loop;
-    if(r.loop.size() == 1) r.loop.push_back(r.loop.front());
-    r.crossing_word = crossing_word(r.loop);
+    const Path single = loop.size() == 1 ? Path(2, loop.front()) : Path(); // a one-point loop, as a path
+    const Path& in = loop.size() == 1 ? single : loop;
+    r.crossing_word = crossing_word(in);
     r.word = reducer_->reduce(r.crossing_word);
     if(opt_.use_geometry && loop.size() > 1) {
       try {
@@ -493,12 +517,13 @@ public:
         // from the loop itself
         Shortest_path_result<TriangleMesh> sp =
           deck_.empty() ? shortest_homotopic_path(s_, loop, opt_.path_options) : word_geodesic(r.word);
-        r.loop = sp.path; r.length = sp.length; r.used_geometry = true;
+        r.loop = std::move(sp.path); r.length = sp.length; r.used_geometry = true;
       } catch(const Precision_error& e) {
         r.used_geometry = false;
         r.geometry_status = e.what();
       }
     }
+    if(!r.used_geometry) r.loop = in; // (the input loop is copied only when it is the result)
     return r;
   }
 
@@ -559,6 +584,7 @@ private:
       return;
     }
     if(from.out == to.in) return;
+    if(!on_cut_.get(p.v)) return; // no edge with a letter at the vertex: none crossed either way (most vertices)
     std::size_t n[2] = {0, 0}, steps[2] = {0, 0};
     for(int k = 0; k < 2; ++k)
       steps[k] = s_.turn(from.out, to.in, k == 0, boost::make_function_output_iterator([&](halfedge_descriptor h) {
@@ -640,10 +666,14 @@ private:
         side_words_[a * m + b] = w;
       }
     exit_side_.clear();
+    on_cut_.clear();
     for(const auto& hp : pos) {
       const std::size_t k = hp.second, j = pos.at(opposite(hp.first, tm_));
       const std::size_t a = count[k], b = count[j - 1];
-      if(a != b) exit_side_.set(hp.first, int(a * m + b)); // a == b: the trivial element
+      if(a != b) { // a == b: the trivial element
+        exit_side_.set(hp.first, int(a * m + b));
+        on_cut_.set(source(hp.first, tm_)); on_cut_.set(target(hp.first, tm_));
+      }
     }
     base_face_ = face(first, tm_);
     base_corner_ = prev(first, tm_); // the corner of D at p on the left of `first`
@@ -689,6 +719,7 @@ private:
   std::vector<Word> x_to_gen_; // cut-system letters as words in the generators (empty: identical)
   std::vector<Word> side_words_;
   internal::Halfedge_int_map<TriangleMesh> exit_side_;
+  internal::Vertex_flags<TriangleMesh> on_cut_; // the ends of the halfedges of exit_side_
   bool canonical_ = true;
   face_descriptor base_face_{};
   halfedge_descriptor base_corner_{};

@@ -168,6 +168,13 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
     }
     if(cross >= 0 && blocking && is_constrained(f, cross)) { *blocking = Edge_ref(f, cross); r.face = f; r.point = p; return r; }
     if(cross >= 0) {
+      // a lift of an end of the edge up to rounding (right of it by 1e-17): the walk would turn around that
+      // vertex forever (every face of its star sees the point across one of its two edges at the vertex)
+      for(int e = cross; e <= cross + 1; ++e) {
+        const int i = e % 3;
+        const double dx = F.z[i].x() - p.x(), dy = F.z[i].y() - p.y();
+        if(dx * dx + dy * dy < 1e-20 && near_corner(F, i, p)) { r.face = f; r.point = p; r.type = Location::ON_VERTEX; r.index = i; return r; }
+      }
       p = transition(f, cross).apply_unchecked(p);
       if(to_chart) *to_chart = rescaled(transition(f, cross) * *to_chart);
       came_from = F.ne[cross];
