@@ -62,10 +62,10 @@ public:
   /// (`number_of_flipped_faces()`), the centre of mass at the origin (below 1e-10), and the angle sums of
   /// `metric()` are 2 pi within 1e-8 (`max_angle_sum_error()`). A conformal map shrinks the protrusions of a
   /// mesh exponentially: faces far below 1e-8 on the sphere (cow.off: edges of 1e-13) are accurate in
-  /// `metric()`, but their double-precision points carry a relative error of about 1e-16 / (edge length)
+  /// `metric()`, but their double-precision points carry a relative error of about 1e-16 / (edge length).
   /// The flow counts as converged also when it stagnated at its rounding floor (status `STAGNATED`) with
   /// max |K| below 1e-8, the tolerance of the angle sums (dragknob.off: every puncture's flow stagnates at
-  /// 1e-10 to 1e-9 or fails; the map of a stagnated flow is valid and conformally consistent to 1e-9)
+  /// 1e-10 to 1e-9 or fails; the map of a stagnated flow is valid and conformally consistent to 1e-9).
   bool converged() const
   {
     const Flow_statistics& st = metric_.statistics();
