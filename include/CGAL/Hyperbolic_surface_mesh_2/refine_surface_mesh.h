@@ -244,16 +244,19 @@ private:
     try { loc = t_.locate(c, e.f, &blocking); }
     catch(const Poincare_disk_domain_error&) { ++st.unrefinable_faces; return Refinement_status::SUCCESS; }
     // not visible inside the feature loops: split the constrained edge in the way instead
+    // (the face is queued again only if the split inserted a vertex: a split refused as too short, counted
+    // unrefinable, would otherwise bring the same face back forever without counting towards the work bound)
+    const std::size_t before = inserted_;
     if(blocking.first != DT::null_index) {
       const Refinement_status s = split(blocking.first, blocking.second, st);
-      if(t_.is_face(e.f) && t_.version(e.f) == e.version) push(e.f); // untouched by the split: still poor
+      if(inserted_ > before && t_.is_face(e.f) && t_.version(e.f) == e.version) push(e.f); // untouched: still poor
       return s;
     }
     // Ruppert: a Steiner point that would encroach a constrained edge is not inserted; the edge is split instead
     std::pair<Face_index, int> enc;
     if(has_constraints_ && encroaches_segment(loc, enc)) {
       const Refinement_status s = split(enc.first, enc.second, st);
-      if(t_.is_face(e.f) && t_.version(e.f) == e.version) push(e.f);
+      if(inserted_ > before && t_.is_face(e.f) && t_.version(e.f) == e.version) push(e.f);
       return s;
     }
     return inserted(loc, st, simplicial ? Kind::SIMPLICIAL : (barycentre ? Kind::BARYCENTER : Kind::CIRCUMCENTER), e.key);
