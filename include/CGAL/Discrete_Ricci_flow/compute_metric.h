@@ -297,8 +297,8 @@ std::vector<double> input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, cons
   return len;
 }
 
-/// divides the lengths by the power of two nearest below their mean (computed without overflow; exact, so
-/// that the flow of a mesh scaled by 2^k is the same computation) and returns that power
+/// divides the lengths by a power of two within a factor 4 of their mean (computed without overflow; exact,
+/// so that the flow of a mesh scaled by 2^k is the same computation) and returns that power
 inline double normalize_lengths(std::vector<double>& len)
 {
   double mx = 0;
@@ -311,9 +311,10 @@ inline double normalize_lengths(std::vector<double>& len)
 }
 
 /// the first face of m that is degenerate for the Euclidean lengths `len` (relative tolerance 1e-12), or
-/// null; `area` receives the total Euclidean area
+/// null; `area` receives the total Euclidean area; `unit`: the input's unit of `len` (for the message)
 template <class Mesh>
-typename Mesh::Face_index degenerate_face(const Mesh& m, const std::vector<double>& len, double& area, std::string& msg)
+typename Mesh::Face_index degenerate_face(const Mesh& m, const std::vector<double>& len, double& area, std::string& msg,
+                                          double unit = 1.0)
 {
   area = 0;
   typename Mesh::Face_index bad = Mesh::null_face();
@@ -324,8 +325,8 @@ typename Mesh::Face_index degenerate_face(const Mesh& m, const std::vector<doubl
     for(int i = 0; i < 3; ++i)
       if(bad == Mesh::null_face() && !(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3] - 1e-12 * s)) {
         std::ostringstream os;
-        os << "degenerate face " << std::size_t(f) << " (edge lengths " << l[0] << ", " << l[1] << ", " << l[2]
-           << " in units of the mean edge length)";
+        os << "degenerate face " << std::size_t(f) << " (edge lengths " << unit * l[0] << ", " << unit * l[1]
+           << ", " << unit * l[2] << ")";
         msg = os.str(); bad = f;
       }
     const double a2 = s * (s - l[0]) * (s - l[1]) * (s - l[2]);
@@ -560,7 +561,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   // metric (vertex scaling only)
   double input_area = 0;
   std::string degenerate_msg;
-  const bool degenerate = internal::degenerate_face(m, input_len, input_area, degenerate_msg) != Mesh::null_face();
+  const bool degenerate = internal::degenerate_face(m, input_len, input_area, degenerate_msg, unit) != Mesh::null_face();
   if(degenerate && scheme != Scheme::VERTEX_SCALING)
     internal::throw_metric_error(degenerate_msg + "; only the vertex-scaling scheme can flip it away");
   internal::Initial_flips<Point_3> init;
@@ -568,7 +569,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
      (degenerate || choose_parameter(get_parameter(np, CGAL::internal_np::ricci_geometric_initial_flips_t_v), false))) {
     init = internal::geometric_delaunay_flips(m, input_len);
     internal::Metric_access::statistics(res).number_of_initial_flips = init.flips.size();
-    if(internal::degenerate_face(m, input_len, input_area, degenerate_msg) != Mesh::null_face())
+    if(internal::degenerate_face(m, input_len, input_area, degenerate_msg, unit) != Mesh::null_face())
       internal::throw_metric_error(degenerate_msg + " after the intrinsic Delaunay flips of the input");
   }
 
