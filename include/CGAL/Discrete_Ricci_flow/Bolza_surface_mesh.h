@@ -27,7 +27,7 @@ namespace Discrete_Ricci_flow {
   the regular octagon with angles pi/4, cosh(s/2) = cot(pi/8)). Vertices have integer coordinates n p on the
   octahedron |x| + |y| + |z| = n (vertex 0 is the branch point +x); the three branch cuts +x..+y, -x..+z,
   -y..-z are crossed by switching sheets; positions are projected to the unit sphere (both sheets alike).
-  Throws `std::invalid_argument` if n < 1.
+  Throws `CGAL::Invalid_option_error` if n < 1.
 */
 template <class Point_3>
 CGAL::Surface_mesh<Point_3> make_Bolza_surface_mesh(int n)

@@ -58,7 +58,7 @@ public:
   std::vector<Cplx> polygon;                          ///< V_0 ... V_{4g-1} in the Poincare disk
   std::map<Face_index, std::array<Cplx, 3> > face_positions; ///< positions of source(halfedge(f)), target, next target
 
-  /// builds the surface of genus `g >= 2` with subdivision `m >= 3`; throws `std::invalid_argument` otherwise
+  /// builds the surface of genus `g >= 2` with subdivision `m >= 3`; throws `CGAL::Invalid_option_error` otherwise
   Regular_polygon_surface(int g, int m) : g_(g), m_(m)
   {
     if(g < 2) throw CGAL::Invalid_option_error("Regular_polygon_surface: genus must be >= 2");
