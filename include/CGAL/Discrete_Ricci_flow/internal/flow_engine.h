@@ -175,11 +175,9 @@ public:
     const double lab = edge_data[e], lbc = edge_data[m.edge(h1)], lca = edge_data[m.edge(h2)],
                  lad = edge_data[m.edge(o1)], ldb = edge_data[m.edge(o2)];
     if(geometric_flips) {
-      // the diagonal c-d of the quad unfolded along a-b: angle at a = angle(c a b) + angle(b a d)
-      const double theta_a = angle[h1] + angle[o2];
-      const double lac = len[m.edge(h2)], lad_ = len[m.edge(o1)];
-      const double lcd2 = lac * lac + lad_ * lad_ - 2 * lac * lad_ * std::cos(theta_a);
-      edge_data[e] = 0.5 * std::sqrt(lcd2 > 0 ? lcd2 : 0.0);
+      // the diagonal c-d of the quad unfolded along a-b (lambda = l / 2 in E^2)
+      edge_data[e] = 0.5 * euclidean_flip_diagonal(len[e], len[m.edge(h1)], len[m.edge(h2)], len[m.edge(o1)],
+                                                   len[m.edge(o2)]);
     } else
       edge_data[e] = (lca * ldb + lad * lbc) / lab;
     flip_log.push_back(e);

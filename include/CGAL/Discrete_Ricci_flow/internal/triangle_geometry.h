@@ -11,11 +11,36 @@
 #include <CGAL/Discrete_Ricci_flow/flow_types.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace CGAL {
 namespace Discrete_Ricci_flow {
 namespace internal {
+
+/// The quadrilateral a b c d of the Euclidean triangles (a b c) and (b a d) glued along a b, unfolded in the
+/// plane in long double: a at the origin, b on the positive x-axis, c to the left of a -> b, d to the right
+/// (a degenerate triangle gets its apex on the axis). The one formula of a metric-preserving (geometric) flip:
+/// the flow's initial Delaunay flips and their replay by the remesher's map to the input both use it.
+inline std::array<std::array<long double, 2>, 4> unfold_euclidean_quadrilateral(double ab, double bc, double ca,
+                                                                              double ad, double db)
+{
+  const long double lab = ab;
+  auto apex = [lab](long double from_a, long double from_b, long double side) {
+    const long double x = (lab * lab + from_a * from_a - from_b * from_b) / (2 * lab);
+    const long double y2 = from_a * from_a - x * x;
+    return std::array<long double, 2>{{x, side * std::sqrt(y2 > 0 ? y2 : 0.0L)}};
+  };
+  return {{{{0, 0}}, {{lab, 0}}, apex(ca, bc, 1), apex(ad, db, -1)}};
+}
+
+/// the length of the diagonal c d of that quadrilateral (the new edge of the geometric flip of a b)
+inline double euclidean_flip_diagonal(double ab, double bc, double ca, double ad, double db)
+{
+  const std::array<std::array<long double, 2>, 4> p = unfold_euclidean_quadrilateral(ab, bc, ca, ad, db);
+  const long double dx = p[2][0] - p[3][0], dy = p[2][1] - p[3][1];
+  return double(std::sqrt(dx * dx + dy * dy));
+}
 
 inline double clamp_cos(double c) { return c < -1.0 ? -1.0 : (c > 1.0 ? 1.0 : c); }
 

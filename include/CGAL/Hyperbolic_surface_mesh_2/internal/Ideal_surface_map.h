@@ -100,8 +100,7 @@ public:
         s.l = {{len[e], len[m.edge(h1)], len[m.edge(h2)], len[m.edge(o1)], len[m.edge(o2)], 0.0}};
         double& lcd = s.l[CD];
         if(euclidean) {
-          const std::array<std::array<long double, 2>, 4> p = unfold(s.l);
-          lcd = double(std::sqrt((p[2][0] - p[3][0]) * (p[2][0] - p[3][0]) + (p[2][1] - p[3][1]) * (p[2][1] - p[3][1])));
+          lcd = Discrete_Ricci_flow::internal::euclidean_flip_diagonal(s.l[AB], s.l[BC], s.l[CA], s.l[AD], s.l[DB]);
         } else
           lcd = (s.l[CA] * s.l[DB] + s.l[AD] * s.l[BC]) / s.l[AB];
         if(!(lcd > 0) || !std::isfinite(lcd))
@@ -203,13 +202,7 @@ private:
   // the left of a -> b, d to the right
   static std::array<std::array<long double, 2>, 4> unfold(const std::array<double, 6>& l)
   {
-    const long double ab = l[AB];
-    auto apex = [ab](long double from_a, long double from_b, long double side) {
-      const long double x = (ab * ab + from_a * from_a - from_b * from_b) / (2 * ab);
-      const long double y2 = from_a * from_a - x * x;
-      return std::array<long double, 2>{{x, side * std::sqrt(y2 > 0 ? y2 : 0.0L)}};
-    };
-    return {{{{0, 0}}, {{ab, 0}}, apex(l[CA], l[BC], 1), apex(l[AD], l[DB], -1)}};
+    return Discrete_Ricci_flow::internal::unfold_euclidean_quadrilateral(l[AB], l[BC], l[CA], l[AD], l[DB]);
   }
 
   // weights on the corners `lab` (quad labels) of a face before the flip of the point with quad weights q;
