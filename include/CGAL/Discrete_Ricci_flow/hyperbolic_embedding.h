@@ -57,7 +57,13 @@ namespace Discrete_Ricci_flow {
     generators g and the relator's partial products (a pattern search started at the base vertex): the
     matrices are then as small as they can be in any frame, which is what limits the accuracy of their
     products in double. The base vertex's lift is at `base_point()` (the origin only if that is optimal);
-    they are rounded to double once, at the end;
+    they are rounded to double once, at the end. Their products in double have a floor of about
+    1e-16 max_k cosh(translation length of the relator's partial product P_k) in every frame (turbine.off:
+    1e-8 at best, cheese.off: 3e5; the manual's "Accuracy of the relator");
+  - exact deck transformations (`deck_transformations_exact()`, on demand): the long-double ones converted
+    exactly when their exact relator product is within 1e-10 of the identity, otherwise the same development
+    in MPFR at a precision chosen from the measured condition, on the metric polished to that precision;
+    `relator_defect_exact()` is their exact product's defect (<= 1.1e-12 on every closed demo mesh);
   - the relator: the boundary of the disk cut along the loops, read in the loops (`relator()`); the product of
     the deck transformations in that order is the identity: `relator_defect()` measures it as a user does
     (double products of the returned matrices), `relator_defect_long_double()` before the rounding;
