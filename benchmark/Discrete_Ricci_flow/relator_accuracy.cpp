@@ -4,7 +4,10 @@
 //     the embedding polishes the metric in long double, so the defect no longer follows the flow's max |K|;
 //  2. `number_of_bases` base vertices spread over the index range: the user's defect (double products of the
 //     returned deck transformations), the long-double defect, the relator condition and the ratio
-//     defect / condition (about 1e-15 if rounding in double dominates, as the manual says).
+//     defect / condition (about 1e-15 if rounding in double dominates, as the manual says);
+//  3. for each embedding, the exact deck transformations (deck_transformations_exact()): their relator defect,
+//     the precision the embedding chose, the max |K| of the metric it used, log10 of the condition measured at
+//     that precision, and the time of that path as a ratio to the time of the embedding's construction.
 // Usage: relator_accuracy [number_of_bases [mesh ...]]
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -32,9 +35,15 @@ void line(const std::string& what, const Metric& r, std::size_t base)
   double min_trace = 1e300;
   for(std::size_t i = 0; i < e.number_of_generators(); ++i) min_trace = (std::min)(min_trace, e.absolute_trace(i));
   const double d = e.relator_defect(), c = e.relator_condition();
+  const auto t1 = std::chrono::steady_clock::now();
+  const double exact = e.relator_defect_exact();
+  const double exact_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   std::cout << "  " << what << " base " << base << ": max |K| " << e.input_max_curvature() << " -> " << e.polished_max_curvature()
             << ", defect " << d << " (long double " << e.relator_defect_long_double() << "), condition " << c
-            << ", defect / condition " << d / c << ", min |trace| " << min_trace << ", " << seconds << " s" << std::endl;
+            << ", defect / condition " << d / c << ", min |trace| " << min_trace << ", " << seconds << " s" << std::endl
+            << "    exact: defect " << exact << " at " << e.exact_precision() << " bits (" << e.exact_attempts()
+            << " rungs), max |K| " << e.exact_polished_max_curvature() << ", log10 condition " << e.exact_relator_condition_log10()
+            << ", time " << exact_seconds / seconds << " x the embedding's construction" << std::endl;
 }
 
 int main(int argc, char** argv)

@@ -9,8 +9,13 @@
 //  - the frame: deck transformation i moves base_point() by at most the length of loop i (the lift of a based
 //    loop from the base point ends at its image) and by at least the translation length;
 //  - the frame is no worse than the base vertex's frame (condition recomputed from the returned matrices).
-// The target defect <= 1e-8 is asserted where the relator is conditioned below 1e6 (base vertex 0 or the best
-// of 8 candidate bases); the meshes above are printed and counted (the manual's table lists them).
+// The target defect <= 1e-8 of the double matrices is asserted where the relator is conditioned below 1e6 (base
+// vertex 0 or the best of 8 candidate bases); the meshes above are printed and counted (the manual's table lists
+// them). On every mesh, the exact deck transformations (deck_transformations_exact(): exact dyadic entries of a
+// development in long double or MPFR) must have a relator product within 1e-8 of the identity, recomputed here
+// with CGAL::Gmpfr products at 4 times the development's precision (not the library's exact Gmpzf products),
+// every exact generator must be hyperbolic (4 Re(alpha)^2 > det, exactly), and the exact traces must agree
+// with the long-double ones.
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -28,6 +33,8 @@
 #include <string>
 
 #include "demo_meshes.h"
+
+#include <CGAL/Gmpfr.h>
 
 namespace {
 typedef CGAL::Epick K;
@@ -70,6 +77,56 @@ LIsometry layer_holonomy(const Surface& s, const Mesh& m, const std::vector<Mesh
   std::size_t guard = 0;
   while(c != root && ++guard < m.number_of_halfedges()) rotate();
   return M.normalized();
+}
+
+// the oracle for the exact deck transformations: their relator product in CGAL::Gmpfr at `bits` bits (each
+// entry converted exactly, products rounded at `bits`), distance of the normalized product to +-I
+double mpfr_relator_defect(const Embedding& e, long bits)
+{
+  typedef CGAL::Gmpfr F;
+  struct M { F ar, ai, br, bi; };
+  std::vector<M> d;
+  for(const Embedding::Exact_isometry& g : e.deck_transformations_exact())
+    d.push_back({F(g.alpha_real(), bits), F(g.alpha_imag(), bits), F(g.beta_real(), bits), F(g.beta_imag(), bits)});
+  M p{F(1, bits), F(0, bits), F(0, bits), F(0, bits)};
+  for(const auto& l : e.relator()) {
+    M g = d[l.first];
+    if(l.second < 0) { g.ai = -g.ai; g.br = -g.br; g.bi = -g.bi; } // the adjugate [[conj a, -b], [-conj b, a]]
+    // [[a, b], [conj b, conj a]] [[c, d], [conj d, conj c]]: alpha = a c + b conj(d), beta = a d + b conj(c)
+    const M q{p.ar * g.ar - p.ai * g.ai + p.br * g.br + p.bi * g.bi, p.ar * g.ai + p.ai * g.ar + p.bi * g.br - p.br * g.bi,
+              p.ar * g.br - p.ai * g.bi + p.br * g.ar + p.bi * g.ai, p.ar * g.bi + p.ai * g.br + p.bi * g.ar - p.br * g.ai};
+    p = q;
+  }
+  const F det = p.ar * p.ar + p.ai * p.ai - p.br * p.br - p.bi * p.bi;
+  if(!(det > 0)) return std::numeric_limits<double>::infinity();
+  const F s = det.sqrt();
+  const double a[4] = {CGAL::to_double(p.ar / s), CGAL::to_double(p.ai / s), CGAL::to_double(p.br / s), CGAL::to_double(p.bi / s)};
+  double dp = std::abs(a[0] - 1), dm = std::abs(a[0] + 1);
+  for(int i = 1; i < 4; ++i) { dp = (std::max)(dp, std::abs(a[i])); dm = (std::max)(dm, std::abs(a[i])); }
+  return (std::min)(dp, dm);
+}
+
+// the exact deck transformations: hyperbolic (exactly), traces as the long-double ones, relator defect <= 1e-8
+// recomputed by mpfr_relator_defect(); returns that defect
+double check_exact(const std::string& name, const Embedding& e)
+{
+  const std::vector<Embedding::Exact_isometry> d = e.deck_transformations_exact();
+  CGAL_HC_CHECK(d.size() == e.number_of_generators());
+  double worst_trace = 0;
+  for(std::size_t i = 0; i < d.size(); ++i) {
+    const CGAL::Gmpzf det = d[i].determinant();
+    CGAL_HC_CHECK_MSG(det > CGAL::Gmpzf(0) && d[i].alpha_real() * d[i].alpha_real() * CGAL::Gmpzf(4) > det,
+                      name << ": exact generator " << i << " is not hyperbolic");
+    const double t = 2 * std::abs(CGAL::to_double(d[i].alpha_real())) / std::sqrt(CGAL::to_double(det));
+    const double tolerance = 1e-8 + 1e-12 * std::cosh(e.loop_length(i) / 2);
+    worst_trace = (std::max)(worst_trace, std::abs(t - e.absolute_trace(i)) / t / tolerance);
+  }
+  CGAL_HC_CHECK_MSG(worst_trace < 1, name << ": exact |trace| differs from the long-double one by " << worst_trace << " times the tolerance");
+  const double own = mpfr_relator_defect(e, 4 * long(e.exact_precision()));
+  CGAL_HC_CHECK_MSG(own <= 1e-8, name << ": exact relator defect " << own << " at " << e.exact_precision() << " bits");
+  CGAL_HC_CHECK_MSG(std::abs(own - e.relator_defect_exact()) <= 1e-14 + 1e-6 * own,
+                    name << ": relator_defect_exact() " << e.relator_defect_exact() << ", recomputed " << own);
+  return own;
 }
 
 double squared_norm(const LIsometry& g)
@@ -146,7 +203,7 @@ CGAL_HC_TEST_CASE(embedding_accuracy_on_every_hyperbolic_demo_mesh)
 {
   const auto meshes = hyperbolic_meshes();
   CGAL_HC_CHECK(meshes.size() >= 13);
-  std::size_t met = 0;
+  std::size_t met = 0, met_exact = 0;
   std::string missed;
   for(const auto& nm : meshes) {
     const std::string& name = nm.first;
@@ -157,9 +214,15 @@ CGAL_HC_TEST_CASE(embedding_accuracy_on_every_hyperbolic_demo_mesh)
     const Embedding e(r);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     double defect = check_embedding(name, r, e);
+    const auto t1 = std::chrono::steady_clock::now();
+    const double exact = check_exact(name, e);
+    const double exact_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    if(exact <= 1e-8) ++met_exact;
     std::cout << "  " << name << ": genus " << r.genus() << ", " << nm.second.number_of_faces() << " faces, max |K| " << e.input_max_curvature() << " -> "
               << e.polished_max_curvature() << ", base 0: defect " << defect << " (long double " << e.relator_defect_long_double()
-              << "), condition " << e.relator_condition() << ", " << seconds << " s";
+              << "), condition " << e.relator_condition() << ", " << seconds << " s; exact: defect " << exact << " at "
+              << e.exact_precision() << " bits, max |K| " << e.exact_polished_max_curvature() << ", log10 condition "
+              << e.exact_relator_condition_log10() << ", " << exact_seconds << " s";
     if(!(defect <= 1e-8)) {
       const auto v = Embedding::best_conditioned_base_vertex(r, 8);
       const Embedding eb(r, v);
@@ -169,6 +232,8 @@ CGAL_HC_TEST_CASE(embedding_accuracy_on_every_hyperbolic_demo_mesh)
     std::cout << std::endl;
     if(defect <= 1e-8) ++met; else missed += " " + name;
   }
-  std::cout << "  relator defect <= 1e-8 on " << met << " of " << meshes.size() << " meshes; not:" << missed << std::endl;
+  std::cout << "  relator defect <= 1e-8 on " << met << " of " << meshes.size() << " meshes; not:" << missed
+            << "; exact deck transformations: on " << met_exact << std::endl;
+  CGAL_HC_CHECK(met_exact == meshes.size());
   CGAL_HC_CHECK_MSG(met + 2 >= meshes.size(), met << " of " << meshes.size());
 }

@@ -10,6 +10,7 @@
 
 #include <CGAL/Discrete_Ricci_flow/compute_metric.h>
 #include <CGAL/Discrete_Ricci_flow/internal/embedding_motions.h>
+#include <CGAL/Discrete_Ricci_flow/internal/embedding_multiprecision.h>
 #include <CGAL/Discrete_Ricci_flow/internal/embedding_polish.h>
 #include <CGAL/Hyperbolic_surface_2/disk_geometry.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -56,7 +57,13 @@ namespace Discrete_Ricci_flow {
     generators g and the relator's partial products (a pattern search started at the base vertex): the
     matrices are then as small as they can be in any frame, which is what limits the accuracy of their
     products in double. The base vertex's lift is at `base_point()` (the origin only if that is optimal);
-    they are rounded to double once, at the end;
+    they are rounded to double once, at the end. Their products in double have a floor of about
+    1e-16 max_k cosh(translation length of the relator's partial product P_k) in every frame (turbine.off:
+    1e-8 at best, cheese.off: 3e5; the manual's "Accuracy of the relator");
+  - exact deck transformations (`deck_transformations_exact()`, on demand): the long-double ones converted
+    exactly when their exact relator product is within 1e-10 of the identity, otherwise the same development
+    in MPFR at a precision chosen from the measured condition, on the metric polished to that precision;
+    `relator_defect_exact()` is their exact product's defect (<= 1.1e-12 on every closed demo mesh);
   - the relator: the boundary of the disk cut along the loops, read in the loops (`relator()`); the product of
     the deck transformations in that order is the identity: `relator_defect()` measures it as a user does
     (double products of the returned matrices), `relator_defect_long_double()` before the rounding;
@@ -92,6 +99,9 @@ public:
   /// isometries in long double (the side pairings of a large domain have entries beyond double's range of
   /// accurate determinants)
   typedef CGAL::Poincare_disk_isometry_2<CGAL::Simple_cartesian<long double> > Long_isometry;
+  /// exact isometries: entries `CGAL::Gmpzf` (dyadic rationals m 2^e with an arbitrary-length integer m), whose
+  /// composition and inversion are exact (`deck_transformations_exact()`)
+  typedef CGAL::Poincare_disk_isometry_2<CGAL::Simple_cartesian<CGAL::Gmpzf> > Exact_isometry;
 
   /// one side of the domain: the cut path as halfedges with D on their left, its twin side, and the map
   /// taking the twin copy onto this one (`pairing` for the hyperbolic background, the translation
@@ -121,7 +131,9 @@ public:
       std::vector<double> l(m_.number_of_edges());
       for(Edge_index e : m_.edges()) l[e] = metric_.length(e);
       const internal::Polished_lengths p = internal::polish_hyperbolic_lengths(m_, l);
-      long_length_ = p.length;
+      long_half_sinh_ = p.half_sinh;
+      long_length_.resize(p.half_sinh.size());
+      for(std::size_t e = 0; e < long_length_.size(); ++e) long_length_[e] = p.length(e);
       polish_before_ = double(p.max_curvature_before); polish_after_ = double(p.max_curvature_after);
       polish_steps_ = p.steps;
     }
@@ -241,6 +253,46 @@ public:
   /// the same distance for the product of the long-double holonomies, multiplied in long double (what the
   /// embedding's own computation achieves before the rounding of the deck transformations to double)
   double relator_defect_long_double() const { return double(product(relator_word()).defect()); }
+
+  /*!
+    The deck transformations of the 2g loops as exact isometries (hyperbolic background), in the frame of
+    `deck_transformations()`, accurate enough for their relator product to be the identity to 1e-10
+    (`relator_defect_exact()`): the double matrices cannot be (their floor is about 1e-16 times
+    `relator_condition()`, see the manual's "Accuracy of the relator"). The precision is chosen from the
+    conditioning (`exact_precision()`):
+    - the long-double development, converted exactly, when the exact product of those is within 1e-10 of
+      the identity (64 bits);
+    - otherwise an MPFR development of the same charts and transitions (`Disk_geometry` over MPFR numbers) at
+      b bits, on the metric polished to that precision (angle sums in MPFR, Newton systems in double as
+      iterative refinement) until max |K| <= max(2^-(b - 16), 1e-12 / condition); b starts at 128 and grows to
+      64 + log2(condition) + 32 bits (condition = max_k cosh d(0, P_k 0) over the relator's partial products,
+      measured in MPFR) and by at least 64 bits per retry while the defect is above 1e-10 (at most 6 rungs,
+      4096 bits); the values are then exact dyadic numbers.
+    Computed on the first call of one of the `*_exact` functions (not thread-safe: call one before sharing
+    the embedding between threads). Cost on the demo meshes: see the manual.
+  */
+  std::vector<Exact_isometry> deck_transformations_exact() const
+  {
+    if(!hyperbolic_) internal::throw_option_error("deck_transformations_exact(): the flat torus has periods(), not isometries");
+    return exact_data().deck;
+  }
+  /// the distance to the identity of the exact product of `deck_transformations_exact()` in the order of
+  /// `relator()` (the largest entry difference of the normalized matrix to +-I, evaluated in double from the
+  /// exact product: about 1e-16 absolute); hyperbolic background
+  double relator_defect_exact() const
+  {
+    if(!hyperbolic_) internal::throw_option_error("relator_defect_exact(): hyperbolic background only");
+    return exact_data().defect;
+  }
+  /// the number of bits of the development behind `deck_transformations_exact()` (64: long double)
+  unsigned exact_precision() const { return exact_data().bits; }
+  /// max |K| of the metric that development used (the long-double polish at 64 bits)
+  double exact_polished_max_curvature() const { return exact_data().max_curvature; }
+  /// log10 of max_k cosh d(0, P_k 0) over the relator's partial products, measured at `exact_precision()`
+  /// (finite where `relator_condition()` overflows long double's determinant)
+  double exact_relator_condition_log10() const { return exact_data().log10_condition; }
+  /// the number of precision rungs tried (1: long double sufficed)
+  int exact_attempts() const { return exact_data().attempts; }
 
   /// max |2 pi - angle sum| of the metric as given and after the long-double polish of the lengths that the
   /// charts use (hyperbolic background; see the class description), and the number of polish steps
@@ -463,31 +515,39 @@ private:
   // Developing along a loop: the current corner c (a halfedge entering the current vertex, in the current face);
   // rotating counterclockwise to the next corner crosses edge(next(c)) into face(opposite(next(c))). M maps the
   // chart of the current face to the chart of the root face's first copy.
-  void rotate(Halfedge_index& c, internal::Motion& M) const
+  // The same walk in every precision: `M` is a motion type (internal::Motion, internal::Mp_isometry) starting
+  // at `identity`, `transition_of(h)` its transition across h.
+  template <class M_type, class Transition>
+  M_type develop_with(const std::vector<Halfedge_index>& loop, const M_type& identity, const Transition& transition_of) const
   {
-    const Halfedge_index g = m_.next(c);
-    M = M * transition(g).inverse();
-    c = m_.opposite(g);
-  }
-
-  internal::Motion develop(const std::vector<Halfedge_index>& loop) const
-  {
-    internal::Motion M = internal::Motion::identity(hyperbolic_);
+    M_type M = identity;
     Halfedge_index c = root_;
     const std::size_t guard_max = m_.number_of_halfedges();
+    auto rotate = [&]() {
+      const Halfedge_index g = m_.next(c);
+      M = M * transition_of(g).inverse();
+      c = m_.opposite(g);
+    };
     for(Halfedge_index h : loop) {
       std::size_t guard = 0;
       while(m_.next(c) != h) {
-        rotate(c, M);
+        rotate();
         if(++guard > guard_max) internal::throw_mesh_error("develop: invalid loop");
       }
       c = h;
     }
     std::size_t guard = 0;
     while(c != root_) {
-      rotate(c, M);
+      rotate();
       if(++guard > guard_max) internal::throw_mesh_error("develop: invalid loop");
     }
+    return M;
+  }
+
+  internal::Motion develop(const std::vector<Halfedge_index>& loop) const
+  {
+    const internal::Motion M = develop_with(loop, internal::Motion::identity(hyperbolic_),
+                                            [this](Halfedge_index h) { return transition(h); });
     return (frame_ * M * frame_.inverse()).normalized();
   }
 
@@ -549,6 +609,118 @@ private:
     for(internal::Motion& h : hol_) h = (T * h * T.inverse()).normalized();
     frame_ = T * frame_;
     base_point_ = T(internal::Cplx(0));
+  }
+
+  // ---------------------------------------------------------------- exact (multiprecision) deck transformations
+  struct Exact_data
+  {
+    unsigned bits = 64;
+    double max_curvature = 0, log10_condition = 0, defect = std::numeric_limits<double>::infinity();
+    int polish_steps = 0, attempts = 0;
+    std::vector<Exact_isometry> deck;
+  };
+
+  const Exact_data& exact_data() const
+  {
+    if(!exact_) exact_ = std::make_shared<const Exact_data>(compute_exact());
+    return *exact_;
+  }
+
+  double exact_relator_defect(const std::vector<Exact_isometry>& d) const
+  {
+    Exact_isometry m;
+    for(const int l : relator_word()) m = m * (l > 0 ? d[l - 1] : d[-l - 1].inverse());
+    return internal::exact_defect(m);
+  }
+
+  Exact_data compute_exact() const
+  {
+    const double target = 1e-10; // 100 times below the embedding's goal of 1e-8
+    Exact_data r;
+    r.bits = 64; r.max_curvature = polish_after_; r.polish_steps = polish_steps_; r.attempts = 1;
+    for(const internal::Motion& h : hol_) r.deck.push_back(internal::to_exact_isometry(h.h.normalized()));
+    r.defect = exact_relator_defect(r.deck);
+    r.log10_condition = std::log10(relator_condition());
+    if(r.defect <= target) return r;
+    double condition = relator_condition(); // +infinity when long double could not measure it
+    unsigned bits = 128;
+    for(int attempt = 2; attempt <= 6 && bits <= 4096; ++attempt) {
+      Exact_data t = develop_multiprecision(bits, condition);
+      t.attempts = attempt;
+      if(t.defect <= r.defect || !(r.defect <= target)) r = t;
+      if(t.defect <= target) break;
+      const double needed = 64 + t.log10_condition * 3.3219280948873623 + 32;
+      bits = (std::max)(bits + 64, 32 * unsigned(std::ceil(needed / 32)));
+      condition = std::pow(10.0, t.log10_condition);
+    }
+    return r;
+  }
+
+  // the development of every loop in MPFR at `bits` bits on the metric polished to that precision, in the frame
+  // of the long-double development (frame_ is an exact isometry in any precision)
+  Exact_data develop_multiprecision(unsigned bits, double condition) const
+  {
+    typedef internal::Mp_real R;
+    typedef CGAL::Hyperbolic_surface_2::Disk_geometry<internal::Mp_kernel> Mp_geometry;
+    typedef internal::Mp_kernel::Point_2 P;
+    const internal::Mp_precision_guard guard(bits);
+    Exact_data r;
+    r.bits = bits;
+    // the long-double polished metric (exactly) as the start
+    std::vector<R> x0(long_half_sinh_.size());
+    for(std::size_t e = 0; e < x0.size(); ++e) x0[e] = R(long_half_sinh_[e]);
+    using std::ldexp;
+    R k_target = ldexp(R(1), -int(bits) + 16);
+    if(std::isfinite(condition) && condition > 0 && R(1e-12 / condition) > k_target) k_target = R(1e-12 / condition);
+    const internal::Polished_lengths_t<R> pl = internal::polish_hyperbolic_lengths<R>(m_, x0, 16, k_target);
+    r.max_curvature = pl.max_curvature_after.template convert_to<double>();
+    r.polish_steps = pl.steps;
+    std::vector<R> L(x0.size()); // lengths 2 asinh(x), on the edges of the charts used
+    std::vector<char> has_length(x0.size(), 0);
+    auto length_of = [&](Halfedge_index h) -> const R& {
+      const std::size_t e = m_.edge(h);
+      if(!has_length[e]) { L[e] = pl.length(e); has_length[e] = 1; }
+      return L[e];
+    };
+    std::vector<std::array<P, 3> > charts(m_.number_of_faces());
+    std::vector<char> has_chart(m_.number_of_faces(), 0);
+    auto chart_of = [&](Face_index f) -> const std::array<P, 3>& {
+      if(!has_chart[f]) {
+        const Halfedge_index h = m_.halfedge(f);
+        charts[f] = Mp_geometry::triangle_chart(length_of(h), length_of(m_.next(h)), length_of(m_.prev(h)));
+        has_chart[f] = 1;
+      }
+      return charts[f];
+    };
+    std::vector<internal::Mp_isometry> transitions(m_.number_of_halfedges());
+    std::vector<char> has_transition(m_.number_of_halfedges(), 0);
+    auto transition_of = [&](Halfedge_index h) -> const internal::Mp_isometry& {
+      if(!has_transition[h]) { // as transition(h) in long double
+        const Halfedge_index o = m_.opposite(h);
+        const std::array<P, 3>& cf = chart_of(m_.face(h));
+        const std::array<P, 3>& cg = chart_of(m_.face(o));
+        const int ih = index_in_face(h), io = index_in_face(o);
+        transitions[h] = Mp_geometry::isometry_from_pairs(cf[ih], cf[(ih + 1) % 3], cg[(io + 1) % 3], cg[io]);
+        has_transition[h] = 1;
+      }
+      return transitions[h];
+    };
+    const internal::Mp_isometry F(R(frame_.h.alpha_real()), R(frame_.h.alpha_imag()), R(frame_.h.beta_real()), R(frame_.h.beta_imag()));
+    std::vector<internal::Mp_isometry> hol;
+    for(std::size_t i = 0; i < number_of_generators(); ++i)
+      hol.push_back((F * develop_with(basis_->loop(i), internal::Mp_isometry(), transition_of) * F.inverse()).normalized());
+    // the condition: max over the partial products of |alpha|^2 + |beta|^2 = cosh d(0, P_k 0)
+    internal::Mp_isometry m;
+    R c = 1;
+    for(const int l : relator_word()) {
+      m = (m * (l > 0 ? hol[l - 1] : hol[-l - 1].inverse())).normalized();
+      const R q = m.alpha_real() * m.alpha_real() + m.alpha_imag() * m.alpha_imag() + m.beta_real() * m.beta_real() + m.beta_imag() * m.beta_imag();
+      if(q > c) c = q;
+    }
+    r.log10_condition = boost::multiprecision::log10(c).template convert_to<double>();
+    for(const internal::Mp_isometry& h : hol) r.deck.push_back(internal::to_exact_isometry(h));
+    r.defect = exact_relator_defect(r.deck);
+    return r;
   }
 
   Word relator_word() const { return basis_->relator(); }
@@ -752,7 +924,7 @@ private:
   Vertex_index base_;
   bool hyperbolic_ = true;
   std::shared_ptr<const Surface> surface_;
-  std::vector<internal::Real> long_length_;
+  std::vector<internal::Real> long_length_, long_half_sinh_; // the polished metric: lengths, sinh(length / 2)
   double polish_before_ = 0, polish_after_ = 0;
   int polish_steps_ = 0;
   std::shared_ptr<const Basis> basis_;
@@ -765,6 +937,7 @@ private:
   std::vector<Halfedge_index> boundary_;
   std::vector<std::pair<std::size_t, int> > relator_;
   std::vector<Side> sides_;
+  mutable std::shared_ptr<const Exact_data> exact_; // computed on demand (exact_data())
 };
 
 } // namespace Discrete_Ricci_flow
