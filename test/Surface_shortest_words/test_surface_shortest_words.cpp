@@ -867,4 +867,81 @@ CGAL_HC_TEST_CASE(issue10_no_precision_limit)
   }
 }
 
+// issue 10, the path functions at any length without rounds: shortest_loop_through_base(),
+// shortest_homotopic_path() and shortest_homotopic_loop() on long inputs (chart chaining and the geodesic of
+// the universal cover). References independent of the path code: the quadruple-precision based and free
+// lengths of the solver's word, CGAL's homotopy test on the words read from the results.
+CGAL_HC_TEST_CASE(issue10_long_paths_and_loops_linear)
+{
+  const int g = 2;
+  RPS S(g, 3);
+  Surface s(S.mesh, S.length);
+  Solver solver(s, S.base, S.generators);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+  std::mt19937 rng(2026);
+  // loops along a generator at the base point, from both sides (the geodesic runs along the generator's
+  // geodesic and through p), short and long
+  for(int l = 1; l <= 2 * g; ++l)
+    for(int sign : {1, -1})
+      for(std::size_t k : {std::size_t(1), std::size_t(3), std::size_t(400)}) {
+        const SSW::Word w(k, sign * l);
+        const Path loop = vertex_path(s, realize(S, w));
+        const double d_ref = based_length_q(g, w), l_ref = free_length_q(g, w);
+        const auto based = SSW::shortest_loop_through_base(s, loop);
+        CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref),
+                          SSW::to_string(w).substr(0, 20) << " x" << k << ": based " << based.length << " vs " << d_ref);
+        CGAL_HC_CHECK(std::abs(s.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
+        const SSW::Word wb = solver.word(based.path);
+        CGAL_HC_CHECK(wb.size() == k);
+        CGAL_HC_CHECK(cst.are_base_point_homotopic(pos(S.mesh, solver.realize(wb)), pos(S.mesh, realize(S, w))));
+        const auto freel = SSW::shortest_homotopic_loop(s, loop);
+        CGAL_HC_CHECK(freel.converged);
+        CGAL_HC_CHECK_MSG(std::abs(freel.length - l_ref) <= 1e-9 * (1 + l_ref), freel.length << " vs " << l_ref);
+      }
+  // random loops of 10^4 and 10^5 edges at the base point
+  for(std::size_t len : {10000, 100000}) {
+    const auto hs = random_loop(S.mesh, S.base, len, rng);
+    const Path loop = vertex_path(s, hs);
+    const auto res = solver.solve(loop);
+    CGAL_HC_CHECK_MSG(res.used_geometry, res.geometry_status);
+    // beyond about 11,000 units cosh overflows even in quadruple precision: then the solver's shortest loop
+    // of the word (deck transformations of the word, not a lift of the path) is the reference
+    const double q_ref = based_length_q(g, res.word);
+    const double d_ref = std::isfinite(q_ref) ? q_ref : res.length;
+    if(std::isfinite(q_ref)) CGAL_HC_CHECK(std::abs(res.length - q_ref) <= 1e-9 * (1 + q_ref));
+    const auto based = SSW::shortest_loop_through_base(s, loop);
+    CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref), based.length << " vs " << d_ref);
+    CGAL_HC_CHECK(std::abs(s.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
+    const SSW::Word wb = solver.word(based.path);
+    CGAL_HC_CHECK(wb.size() == res.word.size());
+    CGAL_HC_CHECK(wb.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                             : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(wb))));
+    if(len == 10000) {
+      const double l_ref = free_length_q(g, res.word);
+      const auto freel = SSW::shortest_homotopic_loop(s, loop);
+      CGAL_HC_CHECK(freel.converged);
+      CGAL_HC_CHECK_MSG(std::abs(freel.length - l_ref) <= 1e-9 * (1 + l_ref), freel.length << " vs " << l_ref);
+      std::cout << "  random loop of " << hs.size() << " edges: free loop " << freel.length << " (reference " << l_ref
+                << ") after " << freel.iterations << " iterations" << std::endl;
+    }
+    // an open path: the walk without its way back; closed by the same way back, the result is the same
+    // element as the input
+    std::vector<Mesh::Halfedge_index> walk(hs.begin(), hs.begin() + std::ptrdiff_t(len));
+    std::vector<Mesh::Halfedge_index> back(hs.begin() + std::ptrdiff_t(len), hs.end());
+    const Path open = vertex_path(s, walk);
+    const auto sp = SSW::shortest_homotopic_path(s, open);
+    CGAL_HC_CHECK(s.same_point(sp.path.front(), open.front()) && s.same_point(sp.path.back(), open.back()));
+    CGAL_HC_CHECK(std::abs(s.path_length(sp.path) - sp.length) <= 1e-9 * (1 + sp.length));
+    CGAL_HC_CHECK(sp.length <= s.path_length(open));
+    Path closed = sp.path;
+    if(!back.empty()) { const Path b = vertex_path(s, back); closed.insert(closed.end(), b.begin() + 1, b.end()); }
+    const SSW::Word wc = solver.word(closed);
+    CGAL_HC_CHECK(wc.size() == res.word.size());
+    CGAL_HC_CHECK(wc.empty() ? res.word.empty()
+                             : cst.are_base_point_homotopic(pos(S.mesh, solver.realize(wc)), pos(S.mesh, solver.realize(res.word))));
+    std::cout << "  random walk of " << len << " edges: based loop " << based.length << " (reference " << d_ref
+              << (std::isfinite(q_ref) ? ", quadruple holonomy" : ", the solver's loop of the word") << "), open path " << sp.length << ", " << sp.embedded_faces << " faces embedded" << std::endl;
+  }
+}
+
 int main(int argc, char** argv) { return cgal_hc_test::run_all(argc, argv); }
