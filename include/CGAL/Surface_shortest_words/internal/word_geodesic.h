@@ -52,10 +52,11 @@ struct Geodesic_anchor
 
 // Locates the geodesic gamma through the points A and B of the closed disk (frame coordinates; either may be
 // ideal) near the origin of the frame: walks from the base face to the face containing the foot of the
-// perpendicular from the origin to gamma, then takes the point where gamma leaves that face towards B.
-// Returns false (no anchor) if the walk exceeds its step bound or the exit point is within 1e-6 of a vertex.
+// perpendicular from the origin to gamma, then takes the point where gamma leaves that face towards B (a
+// vertex if that point is within `vertex_snap` of one). Returns false (no anchor) if the walk exceeds its step
+// bound or the exit point is within 1e-6 of a vertex but farther than `vertex_snap`.
 template <class Surface>
-bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cplx A, Cplx B,
+bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cplx A, Cplx B, double vertex_snap,
                         Geodesic_anchor<Surface>& out)
 {
   typedef typename Surface::Point Point;
@@ -115,19 +116,31 @@ bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cpl
     if(l > best_l) { best_l = l; best_i = i; }
   }
   if(best_i < 0) return false;
-  const Cplx zx = from_klein(kA + best_l * D);
+  Cplx zx = from_klein(kA + best_l * D);
   const Cplx za = tr.z()[best_i], zb = tr.z()[(best_i + 1) % 3];
   const double da = hyperbolic_distance(za, zx), db = hyperbolic_distance(zx, zb);
   const double t = da / (da + db);
-  if(!(t > 1e-6 && t < 1 - 1e-6)) return false;
   const halfedge_descriptor h = tr.halfedge_at(best_i);
-  out.q = Point::on_edge(h, t);
   out.first = typename Surface::Step();
   out.first.face = tr.current_face();
+  halfedge_descriptor corner = halfedge_descriptor();
+  if(t > 1e-6 && t < 1 - 1e-6) {
+    out.q = Point::on_edge(h, t);
+  } else if(t <= vertex_snap || t >= 1 - vertex_snap) {
+    // gamma passes through a vertex (within the trace's own vertex snap; e.g. a geodesic along mesh edges on
+    // a symmetric mesh): anchored at the vertex, at its corner in the current face
+    const int iv = t <= vertex_snap ? best_i : (best_i + 1) % 3; // z[iv] = source(halfedge_at(iv))
+    corner = tr.halfedge_at((iv + 2) % 3);                        // target = that vertex
+    out.q = s.needs_corners() ? s.corner(corner) : Point::vertex(target(corner, s.mesh()));
+    out.first.in = out.first.out = corner;
+    zx = tr.z()[iv];
+  } else {
+    return false; // an edge point within 1e-6 of a vertex but not at it: not a safe start for a trace
+  }
   // frame -> current chart -> the layer's chart of the face -> recentred at q (trace_geodesic's start chart)
   const typename Surface::Face_chart layer = s.chart(tr.current_face());
   const Isometry L = Disk::isometry_from_pairs(layer.z[0], layer.z[1], to_point(tr.z()[0]), to_point(tr.z()[1]));
-  out.to_start = to_origin(s.position(out.q, typename Surface::halfedge_descriptor(), layer)) * L.inverse() * tr.accumulated();
+  out.to_start = to_origin(s.position(out.q, corner, layer)) * L.inverse() * tr.accumulated();
   out.Q = apply_isometry(tr.accumulated().inverse(), zx);
   return true;
 }
@@ -179,7 +192,7 @@ geodesic_of_frames(const Surface& s, const std::vector<Cover_frame<Surface> >& f
     since = (since * D[k - 1]).normalized();
     if(k == n) { trace_to(apply_isometry(since, Cplx(0, 0)), frames[n].q); break; }
     Geodesic_anchor<Surface> a;
-    if(!anchor_on_geodesic(s, frames[k], A[k], B[k], a)) continue;
+    if(!anchor_on_geodesic(s, frames[k], A[k], B[k], o.vertex_snap, a)) continue;
     // in the frame of the previous anchor: ahead of it along gamma (towards B), within one chart
     const Cplx X = apply_isometry(since, a.Q);
     const double lx = chord_parameter(to_klein(A[prev_k]), to_klein(B[prev_k]), to_klein(X));
