@@ -591,6 +591,62 @@ CGAL_HC_TEST_CASE(canonical_system_at_every_base_vertex)
     CGAL_HC_CHECK(failed == 0 && ok > 0);
   }
 }
+// issue 10 item 3: the solver with the computed canonical system (cut and paste, shortening of the generators
+// with the geometry) builds at every base vertex of eight.off and at every 8th of elephant.off and anchor.off,
+// and the word of the loop a1 b1 a1^-1 is confirmed by CGAL's homotopy test (the geometry is counted, not
+// asserted: see the manual's limitations)
+CGAL_HC_TEST_CASE(issue10_solver_at_every_base_vertex)
+{
+  typedef CGAL::Ricci_flow::Discrete_metric<CGAL::Epick::Point_3> Metric;
+  typedef Metric::Mesh IMesh;
+  typedef SSW::Hyperbolic_surface<IMesh, Metric::Edge_length_map> ISurface;
+  typedef SSW::Shortest_word_solver<IMesh, Metric::Edge_length_map> ISolver;
+  std::mt19937 rng(10);
+  for(const char* name : {"/meshes/eight.off", "/meshes/elephant.off", "/meshes/anchor.off"}) {
+    IMesh input;
+    CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_CGAL_DATA_DIR) + name, input));
+    const Metric metric = CGAL::Ricci_flow::hyperbolic_uniformization(input);
+    const IMesh& m = metric.intrinsic_mesh();
+    ISurface s(m, metric.edge_length_map(), 1e-6);
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<IMesh> cst(m);
+    const std::size_t stride = std::string(name) == "/meshes/eight.off" ? 1 : 8;
+    long built = 0, failed = 0, confirmed = 0, no_geometry = 0;
+    for(std::size_t i = 0; i < m.number_of_vertices(); i += stride) {
+      const IMesh::Vertex_index base{IMesh::size_type(i)};
+      try {
+        ISolver solver(s, base);
+        ++built;
+        if(!solver.is_canonical()) { ++failed; continue; }
+        // the loop a1 b1 a1^-1 along the solver's own generators (a geodesic word of 3 letters)
+        std::vector<IMesh::Halfedge_index> hs = solver.generator(0);
+        const auto& g1 = solver.generator(1);
+        hs.insert(hs.end(), g1.begin(), g1.end());
+        for(auto it = solver.generator(0).rbegin(); it != solver.generator(0).rend(); ++it) hs.push_back(m.opposite(*it));
+        const auto res = solver.solve(s.path_from_halfedges(hs));
+        CGAL::Surface_mesh_topology::Path_on_surface<IMesh> p1(m), p2(m);
+        for(auto h : hs) p1.push_back(h);
+        for(auto h : solver.realize(res.word)) p2.push_back(h);
+        const bool ok = !res.word.empty() && cst.are_base_point_homotopic(p1, p2) && res.word.size() == 3;
+        CGAL_HC_CHECK_MSG(ok, name << " base " << i << ": " << solver.word_to_string(res.word));
+        confirmed += ok;
+        // known open defect (not asserted): at a few base vertices the trace of the shortest loop fails
+        // ("traced geodesic misses the end point"), the same with the code before 2026-12-02 17:00 UTC
+        if(!res.used_geometry) {
+          ++no_geometry;
+          if(no_geometry < 4) std::cerr << "  " << name << " base " << i << ": no geometry: " << res.geometry_status << std::endl;
+        }
+      } catch(const std::exception& e) {
+        ++failed;
+        if(failed < 4) std::cerr << "  " << name << " base " << i << ": " << e.what() << std::endl;
+      }
+    }
+    std::cout << "  " << name << ": solver with the computed canonical system at " << built << " base vertices ("
+              << failed << " failed), " << confirmed << " words a1 b1 a1^-1 confirmed by CGAL, shortest loop not traced at "
+              << no_geometry << std::endl;
+    CGAL_HC_CHECK(failed == 0 && built > 0 && confirmed == built);
+  }
+}
+
 // issue 8 hand-off: every closed connected genus >= 2 triangle mesh of CGAL's demo data and elephant_cid.obj:
 // Ricci metric -> Hyperbolic_surface -> solver with the computed canonical system -> words of random loops,
 // checked with CGAL's are_base_point_homotopic on the intrinsic triangulation (big meshes: fewer loops)
