@@ -11,10 +11,12 @@
 // crossing_ms: the exact crossing word alone (no reduction);
 // path_ms:     shortest_homotopic_path on a path of the same number of edges that walks out and back (its
 //              lift stays within reach of double precision: measures the linear lifting and tracing);
-// free_loop_ms: shortest_homotopic_loop (Algorithm 3) on the loop, when its shortest loop fits in one chart;
+// based_loop_ms: shortest_loop_through_base on the loop (Algorithm 2 on the path, chart chaining; one call);
+// free_loop_ms: shortest_homotopic_loop (Algorithm 3) on the loop (one call);
 // cgal_ms:     CGAL Curves_on_surface_topology::are_base_point_homotopic(loop, word realized on the
 //              generators) in the same run (the quadrangulation is built once per mesh, cgal_build_ms).
-// word_ms, exact_ms, crossing_ms and cgal_ms are CPU times, the minimum of 5 calls below 10 ms (min_ms()).
+// word_ms, exact_ms, crossing_ms and cgal_ms are CPU times, each the minimum over several calls after a warm-up
+// call of every method, the four methods called in interleaved, rotated order (interleaved_min_ms()).
 // Usage: bench_surface_shortest_words [max_faces = 1000000] [max_loop_edges = 1000000]
 #include <CGAL/Surface_shortest_words.h>
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
@@ -23,6 +25,9 @@
 #include <chrono>
 #include <ctime>
 #include <cstdlib>
+#include <functional>
+#include <limits>
+#include <vector>
 #include <iostream>
 #include <queue>
 #include <random>
@@ -44,21 +49,29 @@ struct Cpu_clock
 };
 static double ms_since(Cpu_clock::time_point t0) { return 1000.0 * double(std::clock() - t0) / CLOCKS_PER_SEC; }
 
-// The CPU time of fn(): the minimum over 5 calls when a call takes less than 10 ms (else one call). A single
-// call of a short loop is dominated by cache misses on the mesh along the loop, paid by whichever method
-// touches it first (measured on 100-edge loops: a first crossing word 0.05-0.07 ms, the same after a solve
-// 0.01-0.02 ms); repeating gives every method the same warm caches.
-template <class Function>
-static double min_ms(const Function& fn)
+// The CPU times of several methods on the same input, each the minimum over several calls, the calls
+// interleaved: one warm-up call of every method first (a single call of a short loop is dominated by cache
+// misses on the mesh along the loop, paid by whichever method touches it first: measured on 100-edge loops, a
+// first crossing word 0.05-0.07 ms, the same after a solve 0.01-0.02 ms), then rounds in which every method is
+// called once, the order rotated from round to round (so that no method always runs right after another one
+// or first). 9 rounds when the slowest warm-up call took less than 10 ms, 5 below 100 ms, else 3.
+static std::vector<double> interleaved_min_ms(const std::vector<std::function<void()> >& fns)
 {
-  auto t0 = Cpu_clock::now();
-  fn();
-  double best = ms_since(t0);
-  for(int k = 1; k < 5 && best < 10; ++k) {
-    t0 = Cpu_clock::now();
-    fn();
-    best = (std::min)(best, ms_since(t0));
+  std::vector<double> best(fns.size(), std::numeric_limits<double>::infinity());
+  double slowest = 0;
+  for(std::size_t i = 0; i < fns.size(); ++i) {
+    const auto t0 = Cpu_clock::now();
+    fns[i]();
+    slowest = (std::max)(slowest, ms_since(t0));
   }
+  const int rounds = slowest < 10 ? 9 : (slowest < 100 ? 5 : 3);
+  for(int r = 0; r < rounds; ++r)
+    for(std::size_t j = 0; j < fns.size(); ++j) {
+      const std::size_t i = (j + std::size_t(r)) % fns.size();
+      const auto t0 = Cpu_clock::now();
+      fns[i]();
+      best[i] = (std::min)(best[i], ms_since(t0));
+    }
   return best;
 }
 
@@ -115,10 +128,18 @@ int main(int argc, char** argv)
       const Surface::Path loop = surface.path_from_halfedges(hs);
 
       SSW::Word_result<Mesh> res, exact_res;
-      const double word_ms = min_ms([&] { res = solver.solve(loop); });
-      const double exact_ms = min_ms([&] { exact_res = exact.solve(loop); });
       SSW::Word raw;
-      const double crossing_ms = min_ms([&] { raw = solver.crossing_word(loop); });
+      Path_on_surface p1(S.mesh), p2(S.mesh);
+      for(auto h : hs) p1.push_back(h);
+      res = solver.solve(loop);
+      for(auto h : solver.realize(res.word)) p2.push_back(h);
+      bool same = false;
+      const std::vector<double> ms = interleaved_min_ms({
+        [&] { res = solver.solve(loop); },
+        [&] { exact_res = exact.solve(loop); },
+        [&] { raw = solver.crossing_word(loop); },
+        [&] { same = res.word.empty() ? cst.is_contractible(p1) : cst.are_base_point_homotopic(p1, p2); }});
+      const double word_ms = ms[0], exact_ms = ms[1], crossing_ms = ms[2], cgal_ms = ms[3];
       const SSW::Word reduced = SSW::internal::dehn_reduce(raw, solver.relator());
 
       // out-and-back path of about n edges: half a random walk, then back along it, then one more edge
@@ -135,19 +156,21 @@ int main(int argc, char** argv)
       } catch(const SSW::Precision_error&) {}
       const double path_ms = ms_since(t0);
 
-      // Algorithm 3 (free shortest loop) when the loop is short enough for one chart
-      double loop_ms = -1, loop_length = -1; std::size_t loop_iterations = 0;
-      if(res.used_geometry && !res.word.empty() && res.length < 0.9 * SSW::Shortest_path_options().max_lift_distance) {
+      // Algorithm 2 on the loop itself (no word: the path lifted by chart chaining), and Algorithm 3
+      t0 = Cpu_clock::now();
+      double based_length = -1;
+      try { based_length = SSW::shortest_loop_through_base(surface, loop).length; } catch(const SSW::Precision_error&) {}
+      const double based_ms = ms_since(t0);
+      double loop_ms = -1, loop_length = -1; std::size_t loop_iterations = 0; bool loop_converged = false;
+      if(!res.word.empty()) {
         t0 = Cpu_clock::now();
-        const auto fl = SSW::shortest_homotopic_loop(surface, loop);
-        loop_ms = ms_since(t0); loop_length = fl.length; loop_iterations = fl.iterations;
+        try {
+          const auto fl = SSW::shortest_homotopic_loop(surface, loop);
+          loop_length = fl.length; loop_iterations = fl.iterations; loop_converged = fl.converged;
+        } catch(const SSW::Precision_error&) {}
+        loop_ms = ms_since(t0);
       }
 
-      Path_on_surface p1(S.mesh), p2(S.mesh);
-      for(auto h : hs) p1.push_back(h);
-      for(auto h : solver.realize(res.word)) p2.push_back(h);
-      bool same = false;
-      const double cgal_ms = min_ms([&] { same = res.word.empty() ? cst.is_contractible(p1) : cst.are_base_point_homotopic(p1, p2); });
       std::cout << "SSW faces=" << num_faces(S.mesh) << " edges_in_loop=" << hs.size() << " word_ms=" << word_ms
                 << " exact_ms=" << exact_ms << " crossing_ms=" << crossing_ms << " path_ms=" << path_ms << " cgal_ms=" << cgal_ms
                 << " ratio_word_cgal=" << word_ms / cgal_ms << " ratio_exact_cgal=" << exact_ms / cgal_ms
@@ -155,7 +178,7 @@ int main(int argc, char** argv)
                 << " geometric=" << res.used_geometry << " shortest_loop_length=" << res.length << " word_length=" << res.word.size()
                 << " raw_word_length=" << raw.size() << " dehn_of_input_length=" << reduced.size()
                 << " cgal_agrees=" << same << " path_faces=" << faces_met << " path_length=" << path_len
-                << " free_loop_ms=" << loop_ms << " free_loop_length=" << loop_length << " free_loop_iterations=" << loop_iterations << std::endl;
+                << " based_loop_ms=" << based_ms << " based_loop_length=" << based_length << " free_loop_ms=" << loop_ms << " free_loop_length=" << loop_length << " free_loop_iterations=" << loop_iterations << " free_loop_converged=" << loop_converged << std::endl;
     }
   }
   return EXIT_SUCCESS;

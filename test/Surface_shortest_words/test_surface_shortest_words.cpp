@@ -591,6 +591,62 @@ CGAL_HC_TEST_CASE(canonical_system_at_every_base_vertex)
     CGAL_HC_CHECK(failed == 0 && ok > 0);
   }
 }
+// issue 10 item 3: the solver with the computed canonical system (cut and paste, shortening of the generators
+// with the geometry) builds at every base vertex of eight.off and at every 8th of elephant.off and anchor.off,
+// and the word of the loop a1 b1 a1^-1 is confirmed by CGAL's homotopy test (the geometry is counted, not
+// asserted: see the manual's limitations)
+CGAL_HC_TEST_CASE(issue10_solver_at_every_base_vertex)
+{
+  typedef CGAL::Ricci_flow::Discrete_metric<CGAL::Epick::Point_3> Metric;
+  typedef Metric::Mesh IMesh;
+  typedef SSW::Hyperbolic_surface<IMesh, Metric::Edge_length_map> ISurface;
+  typedef SSW::Shortest_word_solver<IMesh, Metric::Edge_length_map> ISolver;
+  std::mt19937 rng(10);
+  for(const char* name : {"/meshes/eight.off", "/meshes/elephant.off", "/meshes/anchor.off"}) {
+    IMesh input;
+    CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_CGAL_DATA_DIR) + name, input));
+    const Metric metric = CGAL::Ricci_flow::hyperbolic_uniformization(input);
+    const IMesh& m = metric.intrinsic_mesh();
+    ISurface s(m, metric.edge_length_map(), 1e-6);
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<IMesh> cst(m);
+    const std::size_t stride = std::string(name) == "/meshes/eight.off" ? 1 : 8;
+    long built = 0, failed = 0, confirmed = 0, no_geometry = 0;
+    for(std::size_t i = 0; i < m.number_of_vertices(); i += stride) {
+      const IMesh::Vertex_index base{IMesh::size_type(i)};
+      try {
+        ISolver solver(s, base);
+        ++built;
+        if(!solver.is_canonical()) { ++failed; continue; }
+        // the loop a1 b1 a1^-1 along the solver's own generators (a geodesic word of 3 letters)
+        std::vector<IMesh::Halfedge_index> hs = solver.generator(0);
+        const auto& g1 = solver.generator(1);
+        hs.insert(hs.end(), g1.begin(), g1.end());
+        for(auto it = solver.generator(0).rbegin(); it != solver.generator(0).rend(); ++it) hs.push_back(m.opposite(*it));
+        const auto res = solver.solve(s.path_from_halfedges(hs));
+        CGAL::Surface_mesh_topology::Path_on_surface<IMesh> p1(m), p2(m);
+        for(auto h : hs) p1.push_back(h);
+        for(auto h : solver.realize(res.word)) p2.push_back(h);
+        const bool ok = !res.word.empty() && cst.are_base_point_homotopic(p1, p2) && res.word.size() == 3;
+        CGAL_HC_CHECK_MSG(ok, name << " base " << i << ": " << solver.word_to_string(res.word));
+        confirmed += ok;
+        // known open defect (not asserted): at a few base vertices the trace of the shortest loop fails
+        // ("traced geodesic misses the end point"), the same with the code before 2026-12-02 17:00 UTC
+        if(!res.used_geometry) {
+          ++no_geometry;
+          if(no_geometry < 4) std::cerr << "  " << name << " base " << i << ": no geometry: " << res.geometry_status << std::endl;
+        }
+      } catch(const std::exception& e) {
+        ++failed;
+        if(failed < 4) std::cerr << "  " << name << " base " << i << ": " << e.what() << std::endl;
+      }
+    }
+    std::cout << "  " << name << ": solver with the computed canonical system at " << built << " base vertices ("
+              << failed << " failed), " << confirmed << " words a1 b1 a1^-1 confirmed by CGAL, shortest loop not traced at "
+              << no_geometry << std::endl;
+    CGAL_HC_CHECK(failed == 0 && built > 0 && confirmed == built);
+  }
+}
+
 // issue 8 hand-off: every closed connected genus >= 2 triangle mesh of CGAL's demo data and elephant_cid.obj:
 // Ricci metric -> Hyperbolic_surface -> solver with the computed canonical system -> words of random loops,
 // checked with CGAL's are_base_point_homotopic on the intrinsic triangulation (big meshes: fewer loops)
@@ -864,6 +920,101 @@ CGAL_HC_TEST_CASE(issue10_no_precision_limit)
       std::cout << "  genus " << g << ", random loop of " << len << " edges: word of " << res.word.size()
                 << " letters, shortest loop " << res.length << " (reference " << d_ref << ")" << std::endl;
     }
+  }
+}
+
+// issue 10, the path functions at any length without rounds: shortest_loop_through_base(),
+// shortest_homotopic_path() and shortest_homotopic_loop() on long inputs (chart chaining and the geodesic of
+// the universal cover). References independent of the path code: the quadruple-precision based and free
+// lengths of the solver's word, CGAL's homotopy test on the words read from the results.
+CGAL_HC_TEST_CASE(issue10_long_paths_and_loops_linear)
+{
+  const int g = 2;
+  RPS S(g, 3);
+  Surface s(S.mesh, S.length);
+  Solver solver(s, S.base, S.generators);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(S.mesh);
+  std::mt19937 rng(2026);
+  // loops along a generator at the base point, from both sides (the geodesic runs along the generator's
+  // geodesic and through p), short and long
+  for(int l = 1; l <= 2 * g; ++l)
+    for(int sign : {1, -1})
+      for(std::size_t k : {std::size_t(1), std::size_t(3), std::size_t(400)}) {
+        const SSW::Word w(k, sign * l);
+        const Path loop = vertex_path(s, realize(S, w));
+        const double d_ref = based_length_q(g, w), l_ref = free_length_q(g, w);
+        const auto based = SSW::shortest_loop_through_base(s, loop);
+        CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref),
+                          SSW::to_string(w).substr(0, 20) << " x" << k << ": based " << based.length << " vs " << d_ref);
+        CGAL_HC_CHECK(std::abs(s.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
+        const SSW::Word wb = solver.word(based.path);
+        CGAL_HC_CHECK(wb.size() == k);
+        CGAL_HC_CHECK(cst.are_base_point_homotopic(pos(S.mesh, solver.realize(wb)), pos(S.mesh, realize(S, w))));
+        const auto freel = SSW::shortest_homotopic_loop(s, loop);
+        CGAL_HC_CHECK(freel.converged);
+        CGAL_HC_CHECK_MSG(std::abs(freel.length - l_ref) <= 1e-9 * (1 + l_ref), freel.length << " vs " << l_ref);
+      }
+  // on the 1152-face surface the geodesic of a1^k runs through mesh vertices: anchors at vertices (the former
+  // chart chaining lost the geodesic there, and the word solver still gets no geometry for these words)
+  {
+    RPS F(g, 12);
+    Surface fs(F.mesh, F.length);
+    for(int sign : {1, -1})
+      for(std::size_t k : {std::size_t(40), std::size_t(400)}) {
+        const SSW::Word w(k, sign);
+        const Path loop = vertex_path(fs, realize(F, w));
+        const double d_ref = based_length_q(g, w), l_ref = free_length_q(g, w);
+        const auto based = SSW::shortest_loop_through_base(fs, loop);
+        CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref), based.length << " vs " << d_ref);
+        CGAL_HC_CHECK(std::abs(fs.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
+        const auto freel = SSW::shortest_homotopic_loop(fs, loop);
+        CGAL_HC_CHECK(freel.converged);
+        CGAL_HC_CHECK_MSG(std::abs(freel.length - l_ref) <= 1e-9 * (1 + l_ref), freel.length << " vs " << l_ref);
+      }
+  }
+  // random loops of 10^4 and 10^5 edges at the base point
+  for(std::size_t len : {10000, 100000}) {
+    const auto hs = random_loop(S.mesh, S.base, len, rng);
+    const Path loop = vertex_path(s, hs);
+    const auto res = solver.solve(loop);
+    CGAL_HC_CHECK_MSG(res.used_geometry, res.geometry_status);
+    // beyond about 11,000 units cosh overflows even in quadruple precision: then the solver's shortest loop
+    // of the word (deck transformations of the word, not a lift of the path) is the reference
+    const double q_ref = based_length_q(g, res.word);
+    const double d_ref = std::isfinite(q_ref) ? q_ref : res.length;
+    if(std::isfinite(q_ref)) CGAL_HC_CHECK(std::abs(res.length - q_ref) <= 1e-9 * (1 + q_ref));
+    const auto based = SSW::shortest_loop_through_base(s, loop);
+    CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref), based.length << " vs " << d_ref);
+    CGAL_HC_CHECK(std::abs(s.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
+    const SSW::Word wb = solver.word(based.path);
+    CGAL_HC_CHECK(wb.size() == res.word.size());
+    CGAL_HC_CHECK(wb.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                             : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(wb))));
+    if(len == 10000) {
+      const double l_ref = free_length_q(g, res.word);
+      const auto freel = SSW::shortest_homotopic_loop(s, loop);
+      CGAL_HC_CHECK(freel.converged);
+      CGAL_HC_CHECK_MSG(std::abs(freel.length - l_ref) <= 1e-9 * (1 + l_ref), freel.length << " vs " << l_ref);
+      std::cout << "  random loop of " << hs.size() << " edges: free loop " << freel.length << " (reference " << l_ref
+                << ") after " << freel.iterations << " iterations" << std::endl;
+    }
+    // an open path: the walk without its way back; closed by the same way back, the result is the same
+    // element as the input
+    std::vector<Mesh::Halfedge_index> walk(hs.begin(), hs.begin() + std::ptrdiff_t(len));
+    std::vector<Mesh::Halfedge_index> back(hs.begin() + std::ptrdiff_t(len), hs.end());
+    const Path open = vertex_path(s, walk);
+    const auto sp = SSW::shortest_homotopic_path(s, open);
+    CGAL_HC_CHECK(s.same_point(sp.path.front(), open.front()) && s.same_point(sp.path.back(), open.back()));
+    CGAL_HC_CHECK(std::abs(s.path_length(sp.path) - sp.length) <= 1e-9 * (1 + sp.length));
+    CGAL_HC_CHECK(sp.length <= s.path_length(open));
+    Path closed = sp.path;
+    if(!back.empty()) { const Path b = vertex_path(s, back); closed.insert(closed.end(), b.begin() + 1, b.end()); }
+    const SSW::Word wc = solver.word(closed);
+    CGAL_HC_CHECK(wc.size() == res.word.size());
+    CGAL_HC_CHECK(wc.empty() ? res.word.empty()
+                             : cst.are_base_point_homotopic(pos(S.mesh, solver.realize(wc)), pos(S.mesh, solver.realize(res.word))));
+    std::cout << "  random walk of " << len << " edges: based loop " << based.length << " (reference " << d_ref
+              << (std::isfinite(q_ref) ? ", quadruple holonomy" : ", the solver's loop of the word") << "), open path " << sp.length << ", " << sp.embedded_faces << " faces embedded" << std::endl;
   }
 }
 

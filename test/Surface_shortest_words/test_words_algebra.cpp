@@ -290,7 +290,7 @@ CGAL_HC_TEST_CASE(make_canonical_random_relators)
   std::mt19937 rng(2026);
   for(int g = 2; g <= 8; ++g) {
     long ok = 0, failed = 0;
-    const int trials = g <= 4 ? 1000 : 400;
+    const int trials = 1000;
     for(int t = 0; t < trials; ++t) {
       const Word R = random_one_vertex_relator(g, rng);
       bool good = true;

@@ -432,87 +432,11 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
   return stack;
 }
 
-// Chart chaining for paths of any length (Birkhoff curve shortening with fixed end points): the path is
-// first cut into geodesic pieces (`geodesic_pieces()`), then repeatedly re-cut into windows of path length
-// about `window` <= max_lift_distance / 2, each replaced by its shortest homotopic path computed in its own
-// chart (`shortest_path_one_chart()`: every point within `window` of that chart's origin, so double
-// precision suffices whatever the total length). The cut points alternate between two offsets (0 and
-// window / 2), so every cut point of one round lies in the middle of a window of the next and is
-// straightened there. A fixed point is a path that is geodesic on every window containing a cut point,
-// i.e. a geodesic; in negative curvature the corner angles shrink by a factor of about cosh(window / 2)
-// per round, and the length is monotone. Stops after two rounds without relative length change above
-// 1e-12 plus two more rounds (corner angles below about 1e-10), or throws `Precision_error` after
-// `max_rounds` rounds.
+// Paths longer than one chart: the lift by chart chaining and the geodesic in the universal cover
+// (internal/word_geodesic.h, included at the end of this header)
 template <class Surface>
 Shortest_path_result<typename Surface::Triangle_mesh>
-straighten_chained(const Surface& surface, typename Surface::Path cur, const Shortest_path_options& options,
-                   std::size_t faces);
-
-template <class Surface>
-Shortest_path_result<typename Surface::Triangle_mesh>
-shortest_path_chained(const Surface& surface, const typename Surface::Path& path, const Shortest_path_options& options)
-{
-  typedef typename Surface::Path Path;
-  std::size_t faces = 0;
-  const std::vector<Path> pieces = geodesic_pieces(surface, path, options, 0.5 * options.max_lift_distance, faces);
-  Path cur = pieces.front();
-  for(std::size_t i = 1; i < pieces.size(); ++i) { cur.back() = pieces[i].front(); cur.insert(cur.end(), pieces[i].begin() + 1, pieces[i].end()); }
-  return straighten_chained(surface, cur, options, faces);
-}
-
-// the Birkhoff rounds of `shortest_path_chained()` on a path made of geodesic pieces (`faces`: the faces
-// embedded so far, for the result and the progress callback)
-template <class Surface>
-Shortest_path_result<typename Surface::Triangle_mesh>
-straighten_chained(const Surface& surface, typename Surface::Path cur, const Shortest_path_options& options,
-                   std::size_t faces)
-{
-  typedef typename Surface::Path Path;
-  Shortest_path_result<typename Surface::Triangle_mesh> res;
-  const double window = (std::min)(10.0, 0.4 * options.max_lift_distance);
-  double prev = std::numeric_limits<double>::infinity();
-  int quiet = 0, extra = 0;
-  // work bound: a spike of excess length E retracts by about window / 2 per round
-  const std::size_t max_rounds = 200 + std::size_t(4 * surface.path_length(cur) / window);
-  std::vector<double> seg;
-  for(std::size_t round = 0;; ++round) {
-    if(round >= max_rounds) {
-      std::ostringstream os;
-      os << "Surface_shortest_words: chart-chained shortening did not converge in " << max_rounds << " rounds";
-      throw Precision_error(os.str());
-    }
-    seg.resize(cur.size() - 1);
-    for(std::size_t i = 0; i + 1 < cur.size(); ++i) seg[i] = surface.path_length(Path{cur[i], cur[i + 1]});
-    Path next;
-    next.reserve(cur.size());
-    next.push_back(cur.front());
-    double len = 0, acc = 0, cut = (round % 2 == 1) ? 0.5 * window : window;
-    std::size_t a = 0;
-    for(std::size_t i = 1; i < cur.size(); ++i) {
-      acc += seg[i - 1];
-      if(acc < cut && i + 1 < cur.size()) continue;
-      const Shortest_path_result<typename Surface::Triangle_mesh> r =
-        shortest_path_one_chart(surface, Path(cur.begin() + std::ptrdiff_t(a), cur.begin() + std::ptrdiff_t(i) + 1), options);
-      next.back() = r.path.front(); // the same point, with the orientation the next segment needs
-      next.insert(next.end(), r.path.begin() + 1, r.path.end());
-      len += r.length;
-      faces += r.embedded_faces;
-      a = i;
-      cut = acc + window;
-    }
-    if(next.size() == 1) next.push_back(cur.back());
-    cur.swap(next);
-    res.length = len;
-    if(options.progress) options.progress(faces);
-    if(std::abs(prev - len) <= 1e-12 * (std::max)(1.0, len)) ++quiet; else quiet = 0;
-    prev = len;
-    if(quiet >= 2 && ++extra > 2) break;
-  }
-  res.path = cur;
-  res.lift_distance = res.length;
-  res.embedded_faces = faces;
-  return res;
-}
+shortest_path_chained(const Surface& surface, const typename Surface::Path& path, const Shortest_path_options& options);
 
 } // namespace internal
 
@@ -530,23 +454,26 @@ straighten_chained(const Surface& surface, typename Surface::Path cur, const Sho
 
   Double precision keeps a lifted point accurate to about 1e-16 e^d at distance d, so one chart serves
   only while the lifted path stays within `options.max_lift_distance` of its start. Longer paths (any
-  length) are computed by chart chaining: the path is cut into short chunks shortened separately and merged
-  on a stack (removing back-and-forth wandering), then straightened by windows of path length about
-  min(10, 0.4 max_lift_distance), each computed in its own chart around its own points, with cut points
-  alternating between two offsets until the length is stationary (Birkhoff curve shortening; in negative
-  curvature the corner angles at the cut points shrink by a factor of about cosh(window / 2) per round).
-  No point is ever far from the origin of its chart, whatever the total length (tested beyond 10^4
-  hyperbolic units against quadruple-precision holonomies).
+  length) are lifted by chart chaining, without iteration: the path is cut into short chunks, each shortened
+  in one chart and merged on a stack with the previous geodesic piece while the merged geodesic is shorter
+  than 0.4 max_lift_distance (removing back-and-forth wandering); at each junction of two pieces a frame
+  (a chart centred at the junction), and between consecutive frames the isometry given by the development of
+  the piece in one chart. The geodesic of the universal cover from the start to the lifted end point is then
+  located in every frame from its two end points, carried there by sweeps of these isometries (a point far
+  away keeps its direction to double precision), anchored at an edge crossing near every junction, and
+  traced between consecutive anchors, each piece in its own chart (`internal::geodesic_of_frames()`, the
+  machinery of `Shortest_word_solver`'s loops). No point is ever far from the origin of its chart, whatever
+  the total length (tested beyond 10^4 hyperbolic units against quadruple-precision holonomies).
 
   \param surface the hyperbolic surface
   \param path a path on it (consecutive points in a common face); the end points are kept
   \param options numerical parameters and progress callback
   \returns the shortest path (start point, its crossings with edges or vertices, end point) and its length.
   \throws Invalid_path_error if `path` is not a path on the mesh
-  \throws Precision_error if a window cannot be traced (the geodesic lost near a vertex) or the chained
-  shortening does not become stationary within its round bound (200 + 4 length / window rounds)
-  Cost: O(n + m) time, O(1) extra memory for the embedding, n = faces met by `path`, m = faces crossed by
-  the result; for paths longer than one chart, O(n + R m) with R rounds (typically 6 to 10).
+  \throws Precision_error if a piece cannot be traced (the geodesic lost near a vertex, or two consecutive
+  anchors farther apart than max_lift_distance)
+  Cost: O(n + m) time, n = faces met by `path`, m = faces crossed by the result; O(1) extra memory for a path
+  that fits one chart, O(number of geodesic pieces) otherwise.
 */
 template <class Surface>
 Shortest_path_result<typename Surface::Triangle_mesh>
@@ -710,5 +637,7 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
 
 } // namespace Surface_shortest_words
 } // namespace CGAL
+
+#include <CGAL/Surface_shortest_words/internal/word_geodesic.h>
 
 #endif // CGAL_SURFACE_SHORTEST_WORDS_SHORTEST_HOMOTOPIC_PATH_H
