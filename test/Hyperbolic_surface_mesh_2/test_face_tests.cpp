@@ -1,6 +1,7 @@
 // The refinement's face tests are exact: Chew's shape test (shortest edge < circumradius) against an
 // independent exact rational reference on the hyperboloid, on faces within a few ulps of the threshold; the
-// Bounded_double stage of every test agrees with the traits' exact predicates whenever it decides.
+// Bounded_double stage of every test agrees with the traits' exact predicates whenever it decides; the
+// Bounded_double error bound holds on random expression trees (cancellation, underflow) against exact rationals.
 #include "test_support.h"
 
 #include <CGAL/Exact_rational.h>
@@ -38,6 +39,32 @@ int chew_reference(const Point& p, const Point& q, const Point& r)
   const Q cmin = (std::min)({c1, c2, c3});
   const Q d = cosh2_r - cmin * cmin;
   return d > 0 ? 1 : (d < 0 ? -1 : 0);
+}
+
+/// a random expression tree of the given depth on random inputs (scales from 1e-170 to 1, so that products
+/// underflow; differences of nearly equal subtrees, so that sums cancel), evaluated in both number types
+void random_tree(CGAL::Random& rng, int depth, HSM::internal::Bounded_double& b, Q& q)
+{
+  typedef HSM::internal::Bounded_double BD;
+  if(depth == 0) {
+    const int kind = rng.get_int(0, 4);
+    const double x = kind == 0 ? 0.0 : std::ldexp(rng.get_double(-1, 1), kind == 1 ? -rng.get_int(0, 560) : -rng.get_int(0, 8));
+    b = BD(x); q = Q(x);
+    return;
+  }
+  BD b1, b2; Q q1, q2;
+  random_tree(rng, depth - 1, b1, q1);
+  const int op = rng.get_int(0, 4);
+  if(op == 3) { // a - a': a tree minus a perturbed copy of itself (cancellation)
+    const double s = 1 + std::ldexp(rng.get_double(-1, 1), -rng.get_int(20, 60));
+    b2 = b1 * BD(s); q2 = q1 * Q(s);
+    b = b1 - b2; q = q1 - q2;
+    return;
+  }
+  random_tree(rng, depth - 1, b2, q2);
+  if(op == 0) { b = b1 + b2; q = q1 + q2; }
+  else if(op == 1) { b = b1 - b2; q = q1 - q2; }
+  else { b = b1 * b2; q = q1 * q2; }
 }
 
 Point rotate(const Point& p, double a) { return Point(std::cos(a) * p.x() - std::sin(a) * p.y(), std::sin(a) * p.x() + std::cos(a) * p.y()); }
@@ -85,6 +112,28 @@ CGAL_HC_TEST_CASE(chew_shape_test_exact_near_threshold)
             << old_test_wrong << std::endl;
   CGAL_HC_CHECK(poor > 50 && fine > 50); // both sides of the threshold are exercised
   CGAL_HC_CHECK(filter_decided < n);     // some faces needed the exact stage
+}
+
+CGAL_HC_TEST_CASE(bounded_double_error_bound)
+{
+  // |computed - exact| <= error() on every tree, and a decided sign is the exact sign; some signs are decided
+  // and some not (both outcomes exercised)
+  CGAL::Random rng(11);
+  std::size_t decided = 0, undecided = 0, n = 0;
+  for(int k = 0; k < 6000; ++k) {
+    HSM::internal::Bounded_double b; Q q;
+    random_tree(rng, 1 + k % 6, b, q);
+    ++n;
+    const Q err = CGAL::abs(Q(b.v) - q);
+    CGAL_HC_CHECK_MSG(err <= Q(b.error()), "tree " << k << " value " << b.v << " bound " << b.error()
+                      << " actual error " << CGAL::to_double(err));
+    const CGAL::Uncertain<CGAL::Sign> s = b.sign();
+    if(CGAL::is_indeterminate(s)) { ++undecided; continue; }
+    ++decided;
+    CGAL_HC_CHECK_MSG(CGAL::get_certain(s) == CGAL::sign(q), "tree " << k);
+  }
+  std::cout << "  Bounded_double: " << n << " trees, " << decided << " signs decided, " << undecided << " not" << std::endl;
+  CGAL_HC_CHECK(decided > 100 && undecided > 100);
 }
 
 CGAL_HC_TEST_CASE(filtered_face_tests_agree_with_exact_predicates)

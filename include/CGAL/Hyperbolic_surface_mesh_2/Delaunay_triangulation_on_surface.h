@@ -388,20 +388,21 @@ public:
 private:
   // The fields read by the edge tests of the Lawson flips and by the walk (chart, adjacency, flags, cached
   // transitions) come first, and a face is aligned to a cache line (256 bytes, 4 lines): the flips are bound by
-  // the cache misses on neighbouring faces.
+  // the cache misses on neighbouring faces. The first line holds the chart, the flags and the version (the
+  // refinement's queue checks `alive` and `version` of every face it pops, then reads the chart).
   struct alignas(64) Face
   {
     std::array<Point_2, 3> z;
-    std::array<Face_index, 3> nb;
     std::array<unsigned char, 3> ne;
     mutable unsigned char tr_ok = 0;
     unsigned char cons = 0;               // bit i: edge i is constrained
     bool alive = true;
+    std::size_t version = 0;
+    std::array<Face_index, 3> nb;
     mutable std::array<Isometry_2, 3> tr; // transition cache (see transition()); bit i of tr_ok: tr[i] valid
     std::array<Vertex_index, 3> v;
     Face_index ref = 0;
     Isometry_2 to_ref;
-    std::size_t version = 0;
   };
   struct Vertex
   {
@@ -435,6 +436,17 @@ private:
     return vertices_.size() - 1;
   }
 
+  /// hints the processor to fetch (for writing) the lines of face f that `link()` and `set_transition()` write
+  /// (flags, adjacency, transition cache: the first three of its four lines); no effect on the result
+  void prefetch_for_link(Face_index f) const
+  {
+#if defined(__GNUC__)
+    const char* p = reinterpret_cast<const char*>(&faces_[f]);
+    __builtin_prefetch(p, 1); __builtin_prefetch(p + 64, 1); __builtin_prefetch(p + 128, 1);
+#else
+    (void)f;
+#endif
+  }
   void link(Face_index a, int i, Face_index b, int j)
   {
     faces_[a].nb[i] = b; faces_[a].ne[i] = (unsigned char)j; faces_[a].tr_ok &= (unsigned char)~(1u << i);

@@ -16,10 +16,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <ostream>
-#include <queue>
 #include <string>
 #include <vector>
 
@@ -123,8 +123,11 @@ class Surface_refiner
 {
   typedef typename DT::Point_2 Point_2;
   typedef typename DT::Face_index Face_index;
-  struct Entry { double key; Face_index f; std::size_t version;
-                 bool operator<(const Entry& o) const { return key < o.key; } };
+  // a queued face in 16 bytes (the four children of a node of the 4-ary heap span one or two cache lines): the
+  // key, the face index and the low 32 bits of its version (a stale entry is taken for current only if its face
+  // index was rebuilt a multiple of 2^32 times meanwhile: then a face that may be good is refined, a harmless
+  // extra Steiner point)
+  struct Entry { double key; std::uint32_t f, version; };
 
 public:
   Surface_refiner(DT& t, const Face_quality<DT>& q, std::size_t max_ins,
@@ -142,9 +145,14 @@ public:
     for(;;) {
       const Refinement_status s = split_encroached_segments(st);
       if(s != Refinement_status::SUCCESS) return s;
-      if(queue_.empty()) break;
-      const Entry e = queue_.top(); queue_.pop();
-      if(!t_.is_face(e.f) || t_.version(e.f) != e.version) continue;
+      if(heap_.empty()) break;
+      const Entry e = pop();
+#if defined(__GNUC__)
+      // the first line of the next entry's face (flags, version, chart; usually the next face refined) is
+      // fetched during this step: the queue's cache miss per pop
+      if(!heap_.empty() && heap_.front().f < t_.face_capacity()) __builtin_prefetch(&t_.lift(heap_.front().f));
+#endif
+      if(!t_.is_face(e.f) || std::uint32_t(t_.version(e.f)) != e.version) continue;
       const Refinement_status s2 = step(e, st);
       if(s2 != Refinement_status::SUCCESS) return s2;
     }
@@ -159,7 +167,7 @@ public:
       if(faces.empty()) { simplicial_ = 1; return Refinement_status::SUCCESS; } // (unchanged since: no second test)
       for(Face_index f : faces) {
         if(!t_.is_face(f)) continue;
-        Entry e{Face_quality<DT>::key_of_circumradius(q_.circumradius(f)), f, t_.version(f)};
+        Entry e{Face_quality<DT>::key_of_circumradius(q_.circumradius(f)), index32(f), std::uint32_t(t_.version(f))};
         const Refinement_status s = step(e, st, true);
         if(s != Refinement_status::SUCCESS) return s;
       }
@@ -175,10 +183,47 @@ public:
 private:
   struct Segment { Face_index f; int i; std::size_t version; };
 
+  static std::uint32_t index32(Face_index f)
+  {
+    if(f > Face_index(0xffffffffu)) throw Numerical_error("refine_surface_mesh: more than 2^32 faces");
+    return std::uint32_t(f);
+  }
   void push(Face_index f)
   {
     const auto ev = q_.evaluate(f);
-    if(ev.bad) queue_.push(Entry{ev.key, f, t_.version(f)});
+    if(!ev.bad) return;
+    // 4-ary max-heap on the key (largest circumradius first): sift up
+    const Entry e{ev.key, index32(f), std::uint32_t(t_.version(f))};
+    std::size_t i = heap_.size();
+    heap_.push_back(e);
+    while(i > 0) {
+      const std::size_t p = (i - 1) / 4;
+      if(!(heap_[p].key < e.key)) break;
+      heap_[i] = heap_[p];
+      i = p;
+    }
+    heap_[i] = e;
+  }
+  /// removes and returns the entry of largest key (the heap is not empty)
+  Entry pop()
+  {
+    const Entry top = heap_.front(), last = heap_.back();
+    heap_.pop_back();
+    const std::size_t n = heap_.size();
+    if(n == 0) return top;
+    std::size_t i = 0;
+    for(;;) {
+      const std::size_t c = 4 * i + 1;
+      if(c >= n) break;
+      std::size_t best = c;
+      const std::size_t end = (std::min)(c + 4, n);
+      for(std::size_t k = c + 1; k < end; ++k) if(heap_[best].key < heap_[k].key) best = k;
+      if(!(last.key < heap_[best].key)) break;
+      heap_[i] = heap_[best];
+      i = best;
+    }
+    heap_[i] = last;
+    return top;
   }
 
   /// a constrained edge with a vertex strictly inside its hyperbolic diametral disk (the apex of either face)
@@ -315,7 +360,7 @@ private:
     }
     if(inserted_ % 4096 == 0) {
       Refinement_progress p;
-      p.insertions = inserted_; p.number_of_vertices = t_.number_of_vertices(); p.queued_faces = queue_.size();
+      p.insertions = inserted_; p.number_of_vertices = t_.number_of_vertices(); p.queued_faces = heap_.size();
       p.current_circumradius = Face_quality<DT>::circumradius_of_key(key);
       if(verbose_) std::cerr << "  refinement: " << p.insertions << " insertions, " << p.number_of_vertices
                              << " vertices, circumradius " << p.current_circumradius << std::endl;
@@ -329,7 +374,7 @@ private:
   std::size_t max_, inserted_ = 0;
   std::function<bool(const Refinement_progress&)> cb_;
   bool verbose_;
-  std::priority_queue<Entry> queue_;
+  std::vector<Entry> heap_; // the poor faces (4-ary max-heap on the key; stale entries skipped when popped)
   std::vector<Segment> segments_; // constrained edges to test for encroachment (stale entries skipped)
   bool has_constraints_ = false;
   int simplicial_ = -1;
@@ -375,8 +420,7 @@ Refinement_statistics refine(DT& t, bool chew, const NamedParameters& np)
   Surface_refiner<DT> r(t, q, std::size_t(max_ins), cb, verbose);
   st.status = r.run(st);
   if(st.status == Refinement_status::SUCCESS && simplicial) st.status = r.make_simplicial(st);
-  q.measure(st, r.known_simplicial());
-  for(auto f : t.faces()) if(q.is_bad(f)) ++st.faces_failing_criteria;
+  q.measure(st, r.known_simplicial()); // (and st.faces_failing_criteria)
   if(st.status == Refinement_status::SUCCESS && st.faces_failing_criteria > 0) st.status = Refinement_status::UNREFINABLE_FACES;
   st.flips = t.number_of_flips() - flips0;
   if(chew) {

@@ -29,13 +29,23 @@ typename CGAL_HSM2_DT::Isometry_2 CGAL_HSM2_DT::set_face(Face_index f, const Poi
   Face& F = faces_[f];
   const Point_2 o = Geometry::barycenter(a, b, c); // in the disk: a barycentre of points of the disk
   const Isometry_2 t(1, 0, -o.x(), -o.y());          // translation_to_origin(o) without its disk check
-  F.z = {{t.apply_unchecked(a), t.apply_unchecked(b), t.apply_unchecked(c)}};
+  // t(z) = (z - o) / (1 - conj(o) z), with one division per point (t.apply_unchecked divides twice)
+  auto recentre = [&o](const Point_2& z) {
+    const double x = z.x(), y = z.y(), nr = x - o.x(), ni = y - o.y();
+    const double dr = 1 - o.x() * x - o.y() * y, di = o.y() * x - o.x() * y;
+    const double s = 1 / (dr * dr + di * di);
+    return Point_2((nr * dr + ni * di) * s, (ni * dr - nr * di) * s);
+  };
+  F.z = {{recentre(a), recentre(b), recentre(c)}};
   F.v = {{va, vb, vc}};
   F.tr_ok = 0; // the callers relink all three edges (which drops the neighbours' cached transitions too)
   F.ref = ref;
   F.to_ref = rescaled(chart_to_ref * t.inverse());
   // keep the anchor near: walk the barycentre (the chart's origin) in the reference triangulation
-  Point_2 q = F.to_ref.apply_unchecked(Point_2(0, 0));
+  // the image of the origin, beta / conj(alpha) = beta alpha / |alpha|^2
+  const double ar = F.to_ref.alpha_real(), ai = F.to_ref.alpha_imag(), br = F.to_ref.beta_real(), bi = F.to_ref.beta_imag();
+  const double s = 1 / (ar * ar + ai * ai);
+  Point_2 q((br * ar - bi * ai) * s, (bi * ar + br * ai) * s);
   ref_.walk(F.ref, q, F.to_ref, 64);
   ref_hint_[F.ref] = f;
   ++F.version;
@@ -269,6 +279,7 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert(const Location& loc)
 template <class Traits_>
 typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, const Point_2& p)
 {
+  for(int k = 0; k < 3; ++k) prefetch_for_link(faces_[f].nb[k]); // (see flip())
   // the transitions to the outer neighbours, before f is rebuilt (an edge glued to f itself is recomputed later)
   const Isometry_2 T[3] = {cached_transition(f, 0), cached_transition(f, 1), cached_transition(f, 2)};
   const Face F = faces_[f];
@@ -367,6 +378,10 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   if(!quad_is_convex(f, i)) return false;
   const Face_index g = faces_[f].nb[i];
   const int j = faces_[f].ne[i];
+  // the four outer neighbours get new adjacency and transitions: their cache lines are fetched while the two
+  // faces are rebuilt (the flips are bound by these misses)
+  prefetch_for_link(faces_[f].nb[(i + 1) % 3]); prefetch_for_link(faces_[f].nb[(i + 2) % 3]);
+  prefetch_for_link(faces_[g].nb[(j + 1) % 3]); prefetch_for_link(faces_[g].nb[(j + 2) % 3]);
   const Face F = faces_[f], G = faces_[g];
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
   const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);

@@ -20,6 +20,12 @@
 #include <set>
 #include <vector>
 
+#if defined(__GNUC__)
+#define CGAL_HSM2_FLATTEN __attribute__((flatten))
+#else
+#define CGAL_HSM2_FLATTEN
+#endif
+
 namespace CGAL {
 namespace Hyperbolic_surface_mesh_2 {
 namespace internal {
@@ -37,6 +43,7 @@ struct Triangle_terms
   Poincare_disk_internal::Circle_coefficients<NT> cc;
   NT delta, sinh2, nn;
   std::array<NT, 3> a;
+  Triangle_terms() : cc(NT(0), NT(0), NT(0), NT(0), NT(0), NT(0)) {}
   Triangle_terms(const NT& px, const NT& py, const NT& qx, const NT& qy, const NT& rx, const NT& ry)
     : Triangle_terms(Poincare_disk_internal::Circle_coefficients<NT>(px, py, qx, qy, rx, ry), px, py, qx, qy, rx, ry) {}
   /// the same from the circle coefficients already computed (the size test needs only those)
@@ -169,7 +176,8 @@ public:
     return fast_evaluate(p, q, r, ev) ? ev.bad : is_bad_exact(p, q, r);
   }
   /// the Bounded_double stage of `evaluate()` on a triangle of the disk: false if it cannot decide
-  bool fast_evaluate(const Point_2& p, const Point_2& q, const Point_2& r, Evaluation& ev) const
+  /// (everything inlined: the rounding counts of Bounded_double are then constants of the compiled code)
+  CGAL_HSM2_FLATTEN bool fast_evaluate(const Point_2& p, const Point_2& q, const Point_2& r, Evaluation& ev) const
   {
     typedef Bounded_double BD;
     const BD px(p.x()), py(p.y()), qx(q.x()), qy(q.y()), rx(r.x()), ry(r.y());
@@ -187,6 +195,25 @@ public:
       return true;
     } catch(Uncertain_conversion_exception&) {
       return false;
+    }
+  }
+  /// `fast_evaluate()`'s test (then the exact stage if needed) and the double-precision terms of the same
+  /// triangle, in one pass (the statistics): the terms are the values of the Bounded_double evaluation, i.e.
+  /// the double evaluation of the same expressions
+  CGAL_HSM2_FLATTEN bool is_bad_with_terms(const Point_2& p, const Point_2& q, const Point_2& r, Triangle_terms<double>& td) const
+  {
+    typedef Bounded_double BD;
+    const BD px(p.x()), py(p.y()), qx(q.x()), qy(q.y()), rx(r.x()), ry(r.y());
+    const Triangle_terms<BD> t(px, py, qx, qy, rx, ry);
+    td.cc.A = t.cc.A.v; td.cc.B = t.cc.B.v; td.cc.C = t.cc.C.v; td.cc.G = t.cc.G.v;
+    td.delta = t.delta.v; td.sinh2 = t.sinh2.v; td.nn = t.nn.v;
+    td.a = {{t.a[0].v, t.a[1].v, t.a[2].v}};
+    try {
+      if(!bool(t.delta.sign() == POSITIVE)) return true;
+      if(bool((t.sinh2 - (BD(cosh2_eps_) - BD(1)) * t.delta).sign() == POSITIVE)) return true;
+      return chew_ ? chew_shape_sign(t) == POSITIVE : ruppert_shape_sign(t, BD(sin2_half_alpha_)) == POSITIVE;
+    } catch(Uncertain_conversion_exception&) {
+      return is_bad_exact(p, q, r);
     }
   }
   /// the poor-face test of the criterion
@@ -222,11 +249,13 @@ public:
     return r;
   }
 
-  /// fills the measured fields of the statistics
+  /// fills the measured fields of the statistics, and `faces_failing_criteria` (the poor-face test of every
+  /// face, exact, in the same pass)
   /// `known_simplicial`: 1 or 0 if the caller has just tested it (-1: test here)
   template <class Statistics>
   void measure(Statistics& st, int known_simplicial = -1) const
   {
+    st.faces_failing_criteria = 0;
     st.final_vertices = t_.number_of_vertices();
     st.final_faces = t_.number_of_faces();
     st.simplicial_complex = known_simplicial >= 0 ? known_simplicial == 1 : t_.is_simplicial_complex();
@@ -244,7 +273,8 @@ public:
     double cmax = -2, cmin = 2, max_sinh2 = 0, min_sin2 = 1;
     for(std::size_t k = 0; k < fs.size(); ++k) {
       const auto& z = t_.lift(fs[k]);
-      const Triangle_terms<double> tt(z[0].x(), z[0].y(), z[1].x(), z[1].y(), z[2].x(), z[2].y());
+      Triangle_terms<double> tt;
+      if(is_bad_with_terms(z[0], z[1], z[2], tt)) ++st.faces_failing_criteria;
       if(!(tt.delta > 0)) { st.minimum_central_angle = 0; st.maximum_circumradius = std::numeric_limits<double>::infinity(); }
       else {
         // circumradius and central angle in double precision (statistics only): sinh^2 h = sinh2 / delta,
