@@ -593,6 +593,7 @@ CGAL_HC_TEST_CASE(circle_packing_schemes_hyperbolic)
                                 RF::parameters::scheme(sch));
     CGAL_HC_CHECK_MSG(r.converged(), "scheme " << int(sch) << ": " << RF::to_string(r.statistics().status));
     CGAL_HC_CHECK(r.statistics().number_of_flips == 0);
+    CGAL_HC_CHECK(r.scheme() == sch); // recorded (the remesher's map to the input needs vertex scaling)
     double err, area; bool tri;
     reference_curvature(r, err, area, tri);
     CGAL_HC_CHECK(tri);

@@ -276,6 +276,15 @@ CGAL_HC_TEST_CASE(remesh_map_with_forced_flips)
   Mesh joint_flipped = with_flipped_edges(joint, 1, 5);
   CGAL_HC_CHECK_THROWS(HSM::input_locations(tj, joint_flipped, mj), CGAL::Invalid_input_error);
   CGAL_HC_CHECK(joint_flipped.number_of_faces() == joint.number_of_faces());
+  // a metric of a circle-packing scheme: its conformal factors are not the vertex-scaling decoration
+  const Mesh eight = read("eight.off");
+  std::vector<double> cp_lengths(eight.number_of_edges());
+  const auto cp = CGAL::Ricci_flow::compute_metric(eight, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0),
+                                                   CGAL::make_property_map(cp_lengths),
+                                                   CGAL::Ricci_flow::parameters::scheme(CGAL::Ricci_flow::Scheme::TANGENTIAL_CIRCLE_PACKING));
+  CGAL_HC_CHECK(cp.converged() && cp.scheme() == CGAL::Ricci_flow::Scheme::TANGENTIAL_CIRCLE_PACKING);
+  const DT tcp = DT::from_surface_triangulation(cp.hyperbolic_surface());
+  CGAL_HC_CHECK_THROWS(HSM::input_locations(tcp, eight, cp), CGAL::Invalid_input_error);
 }
 
 CGAL_HC_TEST_CASE(ideal_map_flip_twice_is_identity)

@@ -74,7 +74,7 @@ public:
   {
     mesh_ = o.mesh_;
     lengths_ = mesh_.template property_map<Edge_index, double>("e:length").first;
-    geo_ = o.geo_; u_ = o.u_; stats_ = o.stats_; target_ = o.target_; genus_ = o.genus_;
+    geo_ = o.geo_; scheme_ = o.scheme_; u_ = o.u_; stats_ = o.stats_; target_ = o.target_; genus_ = o.genus_;
     input_valid_ = o.input_valid_;
     initial_flips_ = o.initial_flips_; flips_ = o.flips_;
     return *this;
@@ -87,6 +87,9 @@ public:
   double length(Edge_index e) const { return lengths_[e]; }
   double length(Halfedge_index h) const { return lengths_[mesh_.edge(h)]; }
   Background_geometry background_geometry() const { return geo_; }
+  /// the scheme that relates the lengths to the conformal factors (`scheme()` named parameter of
+  /// `compute_metric()`; `Scheme::VERTEX_SCALING` for the uniformization entry points)
+  Scheme scheme() const { return scheme_; }
   /// u_i, indexed like the vertices of the input
   const std::vector<double>& conformal_factors() const { return u_; }
   /// the target curvatures used (K for interior vertices, geodesic curvature for border vertices)
@@ -164,6 +167,7 @@ private:
   Mesh mesh_;
   Edge_length_map lengths_;
   Background_geometry geo_ = Background_geometry::HYPERBOLIC;
+  Scheme scheme_ = Scheme::VERTEX_SCALING;
   std::vector<double> u_, target_;
   Flow_statistics stats_;
   long genus_ = 0;
@@ -180,9 +184,10 @@ struct Metric_access
   template <class P> static Flow_statistics& statistics(Discrete_metric<P>& m) { return m.stats_; }
   template <class P>
   static void set(Discrete_metric<P>& m, Background_geometry geo, const std::vector<double>& u,
-                  const std::vector<double>& target, long genus, bool input_valid)
+                  const std::vector<double>& target, long genus, bool input_valid,
+                  Scheme scheme = Scheme::VERTEX_SCALING)
   {
-    m.geo_ = geo; m.u_ = u; m.target_ = target; m.genus_ = genus; m.input_valid_ = input_valid;
+    m.geo_ = geo; m.scheme_ = scheme; m.u_ = u; m.target_ = target; m.genus_ = genus; m.input_valid_ = input_valid;
   }
   template <class P>
   static void set_flips(Discrete_metric<P>& m, const std::vector<typename Discrete_metric<P>::Edge_index>& initial,
@@ -601,7 +606,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   std::vector<double> u = eng.u;
   const double du = scheme == Scheme::VERTEX_SCALING ? (euclidean ? 0.0 : -std::log(unit)) : (euclidean ? std::log(unit) : 0.0);
   for(double& x : u) x += du;
-  internal::Metric_access::set(res, geo, u, target_k, topo.genus, valid);
+  internal::Metric_access::set(res, geo, u, target_k, topo.genus, valid, scheme);
   internal::Metric_access::set_flips(res, init.flips, eng.flip_log);
   st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if(options.verbose)

@@ -74,6 +74,9 @@ Ideal_surface_map<Point_3> ideal_surface_map(const TriangleMesh& tm, const Discr
   namespace DRF = Discrete_Ricci_flow::internal;
   if(metric.background_geometry() != Discrete_Ricci_flow::Background_geometry::HYPERBOLIC)
     throw Invalid_input_error("input_locations: the metric has no hyperbolic background");
+  if(metric.scheme() != Discrete_Ricci_flow::Scheme::VERTEX_SCALING)
+    throw Invalid_input_error("input_locations: the metric was computed with a circle-packing scheme; the map to the "
+                              "input needs the vertex-scaling scheme (Scheme::VERTEX_SCALING)");
   const auto vpm = get_const_property_map(CGAL::vertex_point, tm);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm);
   std::vector<typename Mesh::Vertex_index> vmap;
@@ -103,14 +106,14 @@ Ideal_surface_map<Point_3> ideal_surface_map(const TriangleMesh& tm, const Discr
   input face (whose chord triangle at u = 0 is the input triangle); the initial geometric flips
   (`metric.initial_flips()`) are undone by unfolding. Every location is a convex combination of the corners of
   an input face, so every output vertex lies on the input surface, whether the flow flipped or not.
-  \pre `metric` was computed with the vertex-scaling scheme (`Discrete_Ricci_flow::Scheme::VERTEX_SCALING`, the
-  default of `hyperbolic_uniformization()` and the scheme `conformal_remesh()` uses): the map reads
-  `conformal_factors()` as the vertex-scaling factors u_i (lambda_ij multiplied by e^{(u_i + u_j) / 2}). A
+  The map reads `conformal_factors()` as the vertex-scaling factors u_i (lambda_ij multiplied by
+  e^{(u_i + u_j) / 2}): `metric` must have been computed with `Discrete_Ricci_flow::Scheme::VERTEX_SCALING` (the
+  default of `hyperbolic_uniformization()` and the scheme `conformal_remesh()` uses; `metric.scheme()`). A
   metric of a circle-packing scheme (tangential, Thurston, inversive distance) relates its lengths to the input
-  through radii, not through this decoration; `Discrete_metric` does not record its scheme, so such a metric is
-  not detected and the locations are then wrong (they still lie on input faces).
-  \throws CGAL::Invalid_input_error if `metric` is not a hyperbolic metric computed on `tm` (its flips do not
-  lead from `tm` to its intrinsic mesh, or the sizes differ) or `t` is not a triangulation of its surface.
+  through radii, not through this decoration, and is rejected.
+  \throws CGAL::Invalid_input_error if `metric` is not a hyperbolic metric of the vertex-scaling scheme computed on
+  `tm` (another scheme, its flips do not lead from `tm` to its intrinsic mesh, or the sizes differ) or `t` is not
+  a triangulation of its surface.
 */
 template <class DT, class TriangleMesh, class Point_3>
 std::vector<Mesh_location> input_locations(const DT& t, const TriangleMesh& tm,
