@@ -53,8 +53,8 @@ struct Geodesic_anchor
 // Locates the geodesic gamma through the points A and B of the closed disk (frame coordinates; either may be
 // ideal) near the origin of the frame: walks from the base face to the face containing the foot of the
 // perpendicular from the origin to gamma, then takes the point where gamma leaves that face towards B (a
-// vertex if that point is within `vertex_snap` of one). Returns false (no anchor) if the walk exceeds its step
-// bound or the exit point is within 1e-6 of a vertex but farther than `vertex_snap`.
+// vertex if that point is within `vertex_snap` of one; the next exit along gamma if it is within 1e-6 of a
+// vertex but farther than `vertex_snap`). Returns false (no anchor) if a walk exceeds its step bound.
 template <class Surface>
 bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cplx A, Cplx B, double vertex_snap,
                         Geodesic_anchor<Surface>& out)
@@ -98,35 +98,51 @@ bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cpl
       if(sp > best_s) { best_s = sp; best_i = i; }
     }
     if(best_i < 0) return false;
+    // the walk leaves the face at or beyond X: X lies in it up to rounding (X at a vertex or on an edge: else
+    // the walk could turn around that vertex, or back and forth across the edge, forever)
+    if(best_s >= 1 - 1e-9) break;
     tr.unfold(tr.halfedge_at(best_i));
     move_all(to_origin(to_cplx(Disk::barycenter(to_point(tr.z()[0]), to_point(tr.z()[1]), to_point(tr.z()[2])))));
   }
-  // where gamma leaves the face towards B
-  kA = to_klein(A); kB = to_klein(B);
-  const Cplx D = kB - kA;
-  Cplx K[3];
-  for(int i = 0; i < 3; ++i) K[i] = to_klein(tr.z()[i]);
-  double best_l = -std::numeric_limits<double>::infinity(); int best_i = -1;
-  for(int i = 0; i < 3; ++i) {
-    const Cplx e = K[(i + 1) % 3] - K[i], P = K[i] - kA;
-    const double den = cross(D, e);
-    if(den == 0) continue;
-    const double l = cross(P, e) / den, w = cross(P, D) / den;
-    if(w < -1e-12 || w > 1 + 1e-12) continue;
-    if(l > best_l) { best_l = l; best_i = i; }
+  // where gamma leaves the face towards B. An exit within 1e-6 of a vertex but farther than `vertex_snap` is
+  // no safe start for a trace: gamma is followed into the next faces until it leaves one at a safe point (a
+  // geodesic passing a vertex that closely, e.g. a long based geodesic converging to an axis through mesh
+  // vertices, leaves the vertex's star within a few faces)
+  Cplx zx;
+  double t = 0;
+  int best_i = -1;
+  for(std::size_t step = 0;; ++step) {
+    if(step > 1000) return false;
+    kA = to_klein(A); kB = to_klein(B);
+    const Cplx D = kB - kA;
+    Cplx K[3];
+    for(int i = 0; i < 3; ++i) K[i] = to_klein(tr.z()[i]);
+    double best_l = -std::numeric_limits<double>::infinity();
+    best_i = -1;
+    for(int i = 0; i < 3; ++i) {
+      const Cplx e = K[(i + 1) % 3] - K[i], P = K[i] - kA;
+      const double den = cross(D, e);
+      if(den == 0) continue;
+      const double l = cross(P, e) / den, w = cross(P, D) / den;
+      if(w < -1e-12 || w > 1 + 1e-12) continue;
+      if(l > best_l) { best_l = l; best_i = i; }
+    }
+    if(best_i < 0) return false;
+    zx = from_klein(kA + best_l * D);
+    const Cplx za = tr.z()[best_i], zb = tr.z()[(best_i + 1) % 3];
+    const double da = hyperbolic_distance(za, zx), db = hyperbolic_distance(zx, zb);
+    t = da / (da + db);
+    if((t > 1e-6 && t < 1 - 1e-6) || t <= vertex_snap || t >= 1 - vertex_snap) break;
+    tr.unfold(tr.halfedge_at(best_i));
+    move_all(to_origin(to_cplx(Disk::barycenter(to_point(tr.z()[0]), to_point(tr.z()[1]), to_point(tr.z()[2])))));
   }
-  if(best_i < 0) return false;
-  Cplx zx = from_klein(kA + best_l * D);
-  const Cplx za = tr.z()[best_i], zb = tr.z()[(best_i + 1) % 3];
-  const double da = hyperbolic_distance(za, zx), db = hyperbolic_distance(zx, zb);
-  const double t = da / (da + db);
   const halfedge_descriptor h = tr.halfedge_at(best_i);
   out.first = typename Surface::Step();
   out.first.face = tr.current_face();
   halfedge_descriptor corner = halfedge_descriptor();
   if(t > 1e-6 && t < 1 - 1e-6) {
     out.q = Point::on_edge(h, t);
-  } else if(t <= vertex_snap || t >= 1 - vertex_snap) {
+  } else {
     // gamma passes through a vertex (within the trace's own vertex snap; e.g. a geodesic along mesh edges on
     // a symmetric mesh): anchored at the vertex, at its corner in the current face
     const int iv = t <= vertex_snap ? best_i : (best_i + 1) % 3; // z[iv] = source(halfedge_at(iv))
@@ -134,8 +150,6 @@ bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cpl
     out.q = s.needs_corners() ? s.corner(corner) : Point::vertex(target(corner, s.mesh()));
     out.first.in = out.first.out = corner;
     zx = tr.z()[iv];
-  } else {
-    return false; // an edge point within 1e-6 of a vertex but not at it: not a safe start for a trace
   }
   // frame -> current chart -> the layer's chart of the face -> recentred at q (trace_geodesic's start chart)
   const typename Surface::Face_chart layer = s.chart(tr.current_face());
