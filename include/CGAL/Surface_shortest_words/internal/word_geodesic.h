@@ -50,6 +50,23 @@ struct Geodesic_anchor
   Cplx Q;                      // q in frame coordinates
 };
 
+// Where the line o + l d (Klein model) leaves the triangle K: the largest l over the edges i that the line
+// meets within [-tol, 1 + tol] of their own parameter; `edge` receives i, -1 if no edge is met.
+inline double klein_exit(const Cplx K[3], Cplx o, Cplx d, double tol, int& edge)
+{
+  double best = -std::numeric_limits<double>::infinity();
+  edge = -1;
+  for(int i = 0; i < 3; ++i) {
+    const Cplx P = K[i] - o, e = K[(i + 1) % 3] - K[i];
+    const double den = cross(d, e);
+    if(den == 0) continue;
+    const double l = cross(P, e) / den, w = cross(P, d) / den;
+    if(w < -tol || w > 1 + tol) continue;
+    if(l > best) { best = l; edge = i; }
+  }
+  return best;
+}
+
 // Locates the geodesic gamma through the points A and B of the closed disk (frame coordinates; either may be
 // ideal) near the origin of the frame: walks from the base face to the face containing the foot of the
 // perpendicular from the origin to gamma, then takes the point where gamma leaves that face towards B (a
@@ -77,6 +94,11 @@ bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cpl
     X = apply_isometry(m, X); S = apply_isometry(m, S);
   };
   move_all(to_origin(S));
+  // into the neighbour across edge i of the current face, recentred at its barycentre
+  auto step_across = [&](int i) {
+    tr.unfold(tr.halfedge_at(i));
+    move_all(to_origin(to_cplx(Disk::barycenter(to_point(tr.z()[0]), to_point(tr.z()[1]), to_point(tr.z()[2])))));
+  };
   // straight walk (Klein model: geodesics are straight) from the barycentre of the base face to X
   for(std::size_t step = 0;; ++step) {
     if(step > 100000) return false;
@@ -87,22 +109,13 @@ bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cpl
     for(int i = 0; i < 3; ++i)
       if(cross(K[(i + 1) % 3] - K[i], kX - K[i]) < -1e-13) inside = false;
     if(inside) break;
-    const Cplx u = kX - kS;
-    double best_s = -std::numeric_limits<double>::infinity(); int best_i = -1;
-    for(int i = 0; i < 3; ++i) {
-      const Cplx P = K[i] - kS, d = K[(i + 1) % 3] - K[i];
-      const double den = cross(u, d);
-      if(den == 0) continue;
-      const double sp = cross(P, d) / den, w = cross(P, u) / den;
-      if(w < -1e-9 || w > 1 + 1e-9) continue;
-      if(sp > best_s) { best_s = sp; best_i = i; }
-    }
+    int best_i = -1;
+    const double best_s = klein_exit(K, kS, kX - kS, 1e-9, best_i);
     if(best_i < 0) return false;
     // the walk leaves the face at or beyond X: X lies in it up to rounding (X at a vertex or on an edge: else
     // the walk could turn around that vertex, or back and forth across the edge, forever)
     if(best_s >= 1 - 1e-9) break;
-    tr.unfold(tr.halfedge_at(best_i));
-    move_all(to_origin(to_cplx(Disk::barycenter(to_point(tr.z()[0]), to_point(tr.z()[1]), to_point(tr.z()[2])))));
+    step_across(best_i);
   }
   // where gamma leaves the face towards B. An exit within 1e-6 of a vertex but farther than `vertex_snap` is
   // no safe start for a trace: gamma is followed into the next faces until it leaves one at a safe point (a
@@ -117,24 +130,14 @@ bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cpl
     const Cplx D = kB - kA;
     Cplx K[3];
     for(int i = 0; i < 3; ++i) K[i] = to_klein(tr.z()[i]);
-    double best_l = -std::numeric_limits<double>::infinity();
-    best_i = -1;
-    for(int i = 0; i < 3; ++i) {
-      const Cplx e = K[(i + 1) % 3] - K[i], P = K[i] - kA;
-      const double den = cross(D, e);
-      if(den == 0) continue;
-      const double l = cross(P, e) / den, w = cross(P, D) / den;
-      if(w < -1e-12 || w > 1 + 1e-12) continue;
-      if(l > best_l) { best_l = l; best_i = i; }
-    }
+    const double best_l = klein_exit(K, kA, D, 1e-12, best_i);
     if(best_i < 0) return false;
     zx = from_klein(kA + best_l * D);
     const Cplx za = tr.z()[best_i], zb = tr.z()[(best_i + 1) % 3];
     const double da = hyperbolic_distance(za, zx), db = hyperbolic_distance(zx, zb);
     t = da / (da + db);
     if((t > 1e-6 && t < 1 - 1e-6) || t <= vertex_snap || t >= 1 - vertex_snap) break;
-    tr.unfold(tr.halfedge_at(best_i));
-    move_all(to_origin(to_cplx(Disk::barycenter(to_point(tr.z()[0]), to_point(tr.z()[1]), to_point(tr.z()[2])))));
+    step_across(best_i);
   }
   const halfedge_descriptor h = tr.halfedge_at(best_i);
   out.first = typename Surface::Step();
