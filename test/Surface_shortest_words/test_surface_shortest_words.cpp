@@ -644,6 +644,10 @@ CGAL_HC_TEST_CASE(issue10_solver_at_every_base_vertex)
               << failed << " failed), " << confirmed << " words a1 b1 a1^-1 confirmed by CGAL, shortest loop not traced at "
               << no_geometry << std::endl;
     CGAL_HC_CHECK(failed == 0 && built > 0 && confirmed == built);
+    // the known open defect may not spread: none on eight.off, at most the 5 (elephant) and 2 (anchor) base
+    // vertices listed in the manual
+    const long known = std::string(name) == "/meshes/eight.off" ? 0 : (std::string(name) == "/meshes/elephant.off" ? 5 : 2);
+    CGAL_HC_CHECK_MSG(no_geometry <= known, name << ": no geometry at " << no_geometry << " base vertices, known " << known);
   }
 }
 
