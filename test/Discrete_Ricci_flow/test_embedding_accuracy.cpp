@@ -237,3 +237,16 @@ CGAL_HC_TEST_CASE(embedding_accuracy_on_every_hyperbolic_demo_mesh)
   CGAL_HC_CHECK(met_exact == meshes.size());
   CGAL_HC_CHECK_MSG(met + 2 >= meshes.size(), met << " of " << meshes.size());
 }
+
+// the multiprecision number type of the exact path encloses its value in to_interval() (the filters of CGAL
+// kernels rely on it): 1/3 and -1/3 at 200 bits are no doubles, so the enclosure must be a proper interval
+CGAL_HC_TEST_CASE(multiprecision_to_interval_encloses)
+{
+  typedef RF::internal::Mp_real R;
+  const RF::internal::Mp_precision_guard guard(200);
+  for(const R x : {R(1) / 3, R(-1) / 3, R(2) / 7 * R(1e300), R(1) / R(1e300) / 3}) {
+    const std::pair<double, double> i = CGAL::to_interval(x);
+    CGAL_HC_CHECK(i.first < i.second);
+    CGAL_HC_CHECK(R(i.first) <= x && x <= R(i.second));
+  }
+}

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace CGAL {
 namespace Discrete_Ricci_flow {
@@ -59,7 +60,8 @@ public:
   {
     std::pair<double, double> operator()(const Type& x) const
     {
-      return (Interval_nt<>(x.convert_to<double>()) + Interval_nt<>::smallest()).pair();
+      // rounded down and up by MPFR: an enclosure (the nearest double plus a denormal was none)
+      return std::make_pair(mpfr_get_d(x.backend().data(), MPFR_RNDD), mpfr_get_d(x.backend().data(), MPFR_RNDU));
     }
   };
   struct Is_finite : public CGAL::cpp98::unary_function<Type, bool>
