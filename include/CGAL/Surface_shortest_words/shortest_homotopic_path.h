@@ -109,6 +109,10 @@ struct Shortest_path_result
   std::size_t embedded_faces = 0;   ///< faces embedded (transiently) while lifting and tracing
   std::size_t iterations = 0;       ///< re-basing iterations (loops only)
   bool converged = true;            ///< loops only: the length change fell below the tolerance
+  /// a-posteriori error: the hyperbolic distance between the lift of the end point the trace aimed at and
+  /// the end point it reached (summed over the traced pieces); it bounds the effect of the rounding of the
+  /// lift, and of the metric's residual angle defects, on `length`
+  double end_mismatch = 0;
 };
 
 namespace internal {
@@ -327,6 +331,7 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
       } else {
         const Cplx E = finish_at_end(surface, tr, T, end, at_vertex ? corner : boost::graph_traits<typename Surface::Triangle_mesh>::null_halfedge(), res.path);
         res.length += internal::distance_to_origin(E);
+        res.end_mismatch = internal::hyperbolic_distance(E, T);
         break;
       }
     }

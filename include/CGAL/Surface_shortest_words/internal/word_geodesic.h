@@ -202,6 +202,7 @@ geodesic_of_frames(const Surface& s, const std::vector<Cover_frame<Surface> >& f
     if(cur.empty()) cur = piece.path;
     else { cur.back() = piece.path.front(); cur.insert(cur.end(), piece.path.begin() + 1, piece.path.end()); }
     res.length += piece.length;
+    res.end_mismatch += piece.end_mismatch;
     res.embedded_faces += piece.embedded_faces;
     if(o.progress) o.progress(res.embedded_faces);
   };
