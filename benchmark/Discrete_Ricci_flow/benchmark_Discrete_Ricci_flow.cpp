@@ -69,7 +69,7 @@ static Factorization_time one_factorization(const RF::Discrete_metric<Point_3>& 
   Eigen::VectorXd b = Eigen::VectorXd::Ones(n), x(n);
   Factorization_time best;
   for(int rep = 0; rep < 2; ++rep) {
-    RF::internal::Sparse_cholesky solver(s);
+    RF::internal::Sparse_cholesky solver(s, std::size_t(n));
     RF::Flow_statistics st;
     const double w0 = wall_now(), c0 = cpu_now();
     if(!solver.solve(H, 0, b, x, st)) std::cerr << "factorization failed" << std::endl;

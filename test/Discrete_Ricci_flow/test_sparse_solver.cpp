@@ -125,7 +125,7 @@ CGAL_HC_TEST_CASE(sparse_solvers_agree)
   if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
   std::vector<Eigen::VectorXd> xs;
   for(auto s : solvers) {
-    RF::internal::Sparse_cholesky chol(s);
+    RF::internal::Sparse_cholesky chol(s, std::size_t(n));
     RF::Flow_statistics st;
     Eigen::VectorXd x;
     CGAL_HC_CHECK(chol.solve(H, 0, b, x, st));
@@ -143,7 +143,7 @@ CGAL_HC_TEST_CASE(sparse_solvers_agree)
   Eigen::SparseMatrix<double> A = H;
   A.coeffRef(5, 5) = -1.0;
   for(auto s : solvers) {
-    RF::internal::Sparse_cholesky chol(s);
+    RF::internal::Sparse_cholesky chol(s, std::size_t(n));
     RF::Flow_statistics st;
     Eigen::VectorXd x;
     CGAL_HC_CHECK(chol.solve(A, 0, b, x, st));
@@ -194,4 +194,21 @@ CGAL_HC_TEST_CASE(factorization_reuse_gives_the_same_metric)
     CGAL_HC_CHECK(std::abs(fast.total_area() - ref.total_area()) < 1e-8 * ref.total_area());
   }
   CGAL_HC_CHECK(with_cg > 0); // the conjugate gradients did run
+}
+
+// the default solver: SimplicialLDLT below 100,000 vertices, CHOLMOD (when configured) from there; an explicit
+// choice is kept; the flow reports the solver it used
+CGAL_HC_TEST_CASE(default_solver_by_size)
+{
+  using RF::Sparse_solver;
+  CGAL_HC_CHECK(RF::internal::default_solver(Sparse_solver::DEFAULT, 99999) == Sparse_solver::SIMPLICIAL_LDLT);
+  CGAL_HC_CHECK(RF::internal::default_solver(Sparse_solver::DEFAULT, 100000) ==
+                (RF::has_cholmod() ? Sparse_solver::SUPERNODAL_CHOLMOD : Sparse_solver::SIMPLICIAL_LDLT));
+  CGAL_HC_CHECK(RF::internal::default_solver(Sparse_solver::SIMPLICIAL_LDLT, 1000000) == Sparse_solver::SIMPLICIAL_LDLT);
+  if(RF::has_cholmod())
+    CGAL_HC_CHECK(RF::internal::default_solver(Sparse_solver::SUPERNODAL_CHOLMOD, 10) == Sparse_solver::SUPERNODAL_CHOLMOD);
+  Mesh m;
+  CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/eight.off", m));
+  const auto metric = RF::hyperbolic_uniformization(m);
+  CGAL_HC_CHECK(metric.converged() && metric.statistics().solver_used == Sparse_solver::SIMPLICIAL_LDLT);
 }

@@ -102,8 +102,10 @@ inline std::string message(const std::string& what) { return "CGAL::Discrete_Ric
 } // namespace internal
 
 /// \ingroup PkgDiscreteRicciFlowRef
-/// The sparse Cholesky factorization of the Newton systems. `DEFAULT` is CHOLMOD's supernodal Cholesky when
-/// the library was configured with SuiteSparse (macro `CGAL_HC_HAS_CHOLMOD`), else Eigen's `SimplicialLDLT`.
+/// The sparse Cholesky factorization of the Newton systems. `DEFAULT` is CHOLMOD's supernodal Cholesky for
+/// meshes of at least 100,000 vertices when the library was configured with SuiteSparse (macro
+/// `CGAL_HC_HAS_CHOLMOD`), else Eigen's `SimplicialLDLT` (faster on smaller meshes, see the manual's
+/// performance section).
 /// An indefinite Hessian (spherical background) falls back to `SimplicialLDLT` for that iteration.
 enum class Sparse_solver { DEFAULT, SUPERNODAL_CHOLMOD, SIMPLICIAL_LDLT };
 
