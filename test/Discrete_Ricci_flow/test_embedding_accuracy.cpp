@@ -244,7 +244,7 @@ CGAL_HC_TEST_CASE(multiprecision_to_interval_encloses)
 {
   typedef RF::internal::Mp_real R;
   const RF::internal::Mp_precision_guard guard(200);
-  for(const R x : {R(1) / 3, R(-1) / 3, R(2) / 7 * R(1e300), R(1) / R(1e300) / 3}) {
+  for(const R& x : {R(1) / 3, R(-1) / 3, R(2) / 7 * R(1e300), R(1) / R(1e300) / 3}) {
     const std::pair<double, double> i = CGAL::to_interval(x);
     CGAL_HC_CHECK(i.first < i.second);
     CGAL_HC_CHECK(R(i.first) <= x && x <= R(i.second));

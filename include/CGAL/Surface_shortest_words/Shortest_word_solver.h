@@ -20,6 +20,7 @@
 #include <queue>
 #include <set>
 #include <sstream>
+#include <type_traits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -213,6 +214,9 @@ public:
   typedef typename Surface::face_descriptor face_descriptor;
   typedef typename Surface::Path Path;
   typedef typename Surface::Point Point;
+  /// isometries of the Poincare disk (the deck transformations, `deck_transformation()`)
+  typedef CGAL::Poincare_disk_isometry_2<CGAL::Epick> Isometry;
+  static_assert(std::is_same<Isometry, internal::Isometry>::value, "the layout's isometry type");
   typedef typename Surface::Step Step;
 
   /// `generators[2i]` = a_{i+1}, `generators[2i+1]` = b_{i+1}, as halfedge loops from `base` to `base`.
@@ -485,7 +489,7 @@ public:
   /// the deck transformation of generator i in the base frame (the layer's chart of `base_face()`
   /// recentred at p): the lift from the origin of the loop of generator i ends at its image of the origin.
   /// \throws Precision_error if `has_deck_transformations()` is false
-  const internal::Isometry& deck_transformation(std::size_t i) const
+  const Isometry& deck_transformation(std::size_t i) const
   {
     if(deck_.empty()) throw Precision_error("Shortest_word_solver: the deck transformations were not computed");
     return deck_.at(i);
