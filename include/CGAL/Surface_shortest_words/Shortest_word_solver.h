@@ -392,6 +392,13 @@ private:
                                                internal::to_point(internal::apply_isometry(back, end.z()[1])));
   }
 
+  // the end mismatch accepted without tracing the loop itself: the rounding of a lift at the loop's length
+  // (about 1e-16 e^length) and 1e-9 relative
+  static double mismatch_tolerance(double length)
+  {
+    return (std::max)(1e-9 * (1 + length), 1e-15 * std::exp((std::min)(length, 30.0)));
+  }
+
   // The shortest loop through p of the element of the (geodesic) word w: w is cut into pieces whose deck
   // transformation moves p by at most `reach` (one isometry product per letter); the geodesic of their
   // product is located piece by piece in the frames of the lattice points between the pieces, from its two
@@ -407,13 +414,6 @@ private:
   // geodesic, which holds for generators that move p by at most `reach` (the lattice points of a geodesic
   // word fellow-travel its geodesic); with longer generators `Precision_error` is thrown (cutting such
   // pieces shorter left the lattice points far from the geodesic and gave wrong lengths).
-  // the end mismatch accepted without tracing the loop itself: the rounding of a lift at the loop's length
-  // (about 1e-16 e^length) and 1e-9 relative
-  static double mismatch_tolerance(double length)
-  {
-    return (std::max)(1e-9 * (1 + length), 1e-15 * std::exp((std::min)(length, 30.0)));
-  }
-
   Shortest_path_result<TriangleMesh> word_geodesic(const Word& w) const
   {
     const Shortest_path_options& o = opt_.path_options;
@@ -424,19 +424,19 @@ private:
       // the whole word in one piece when its lift of p is within `reach` (a lift at distance d carries errors
       // of about 1e-14 e^d: 1e-10 at 10 units, 1e-5 at 22)
       int since = 0;
+      double longest = 0; // the largest move of a letter
       for(int l : w) {
         const std::size_t i = std::size_t(std::abs(l) - 1);
         D = D * (l > 0 ? deck_[i] : deck_[i].inverse());
+        longest = (std::max)(longest, deck_moves_[i]);
         if(++since >= 8) { D = D.normalized(); since = 0; }
       }
-      const double d = internal::distance_to_origin(internal::apply_isometry(D, internal::Cplx(0, 0)));
-      if(d <= reach)
+      if(internal::distance_to_origin(internal::apply_isometry(D, internal::Cplx(0, 0))) <= reach)
         return internal::geodesic_of_deck_product(s_, base_face_, base_corner_, std::vector<internal::Isometry>(1, D), o);
+      if(w.size() > 1 && longest > reach)
+        throw Precision_error("Shortest_word_solver: a generator moves p farther than 0.4 max_lift_distance");
       D = internal::Isometry();
     }
-    for(int l : w)
-      if(deck_moves_[std::size_t(std::abs(l) - 1)] > reach && w.size() > 1)
-        throw Precision_error("Shortest_word_solver: a generator moves p farther than 0.4 max_lift_distance");
     for(std::size_t j = 0, since = 0; j < w.size(); ++j) {
       const internal::Isometry& g = deck_[std::size_t(std::abs(w[j]) - 1)];
       internal::Isometry n = D * (w[j] > 0 ? g : g.inverse());
@@ -451,6 +451,45 @@ private:
     }
     pieces.push_back(D.normalized());
     return internal::geodesic_of_deck_product(s_, base_face_, base_corner_, pieces, o);
+  }
+
+  // The shortest loop through p of the element w (`loop`: a loop in its class, or null for the loop along
+  // the generators, built only if needed): from the product of
+  // the deck transformations along w (the word is geodesic: no wandering). That product is ill-conditioned
+  // when long generators cancel (see word_geodesic()); its trace then ends away from the lift it aimed at
+  // (`end_mismatch`, an a-posteriori error bound). Above `mismatch_tolerance()`, or without deck
+  // transformations, the loop itself is traced (chart chaining: every point near the origin of its chart,
+  // consistent with the faces it crosses) and the result with the smaller mismatch is kept; `status` then
+  // says why (empty if the product's trace was accepted, or if there are no deck transformations). Throws
+  // `Precision_error` if neither can be traced.
+  Shortest_path_result<TriangleMesh> geodesic_loop(const Word& w, const Path* loop, std::string& status) const
+  {
+    std::string why;
+    Shortest_path_result<TriangleMesh> best;
+    bool have = false;
+    if(!deck_.empty()) {
+      try {
+        best = word_geodesic(w);
+        have = true;
+        if(best.end_mismatch <= mismatch_tolerance(best.length)) return best;
+        std::ostringstream os;
+        os << "product of the deck transformations: trace ends " << best.end_mismatch << " from its aim; ";
+        why = os.str();
+      } catch(const Precision_error& e) {
+        why = std::string("product of the deck transformations: ") + e.what() + "; ";
+      }
+    }
+    try {
+      const Path along = loop ? Path() : s_.path_from_halfedges(realize(w));
+      Shortest_path_result<TriangleMesh> sp = shortest_homotopic_path(s_, loop ? *loop : along, opt_.path_options);
+      if(!have || sp.end_mismatch <= best.end_mismatch) { best = std::move(sp); why += "traced from the loop instead"; }
+      else why += "the loop's own trace was farther from its aim";
+    } catch(const Precision_error& e) {
+      if(!have) throw Precision_error(why + "the loop: " + e.what());
+      why += std::string("the loop: ") + e.what() + "; the product's trace kept";
+    }
+    if(!deck_.empty()) status = why;
+    return best;
   }
 
   void shorten()
@@ -503,13 +542,8 @@ public:
     if(deck_.empty()) throw Precision_error("Shortest_word_solver: the deck transformations were not computed");
     for(int l : w)
       if(l == 0 || std::size_t(std::abs(l)) > gens_.size()) throw Invalid_path_error("Shortest_word_solver: not a letter of the generators");
-    if(w.empty()) return word_geodesic(w);
-    try {
-      return word_geodesic(w);
-    } catch(const Precision_error&) {
-      // an ill-conditioned product: the loop along the generators itself (chart chaining)
-      return shortest_homotopic_path(s_, s_.path_from_halfedges(realize(w)), opt_.path_options);
-    }
+    std::string status;
+    return geodesic_loop(w, nullptr, status);
   }
   bool has_shortened_generator(std::size_t i) const { return i < short_gens_.size() && short_status_[i].empty(); }
   const std::string& shortened_generator_status(std::size_t i) const { return short_status_.at(i); }
@@ -551,48 +585,11 @@ public:
     r.crossing_word = crossing_word(in);
     r.word = reducer_->reduce(r.crossing_word);
     if(opt_.use_geometry && loop.size() > 1) {
-      // from the word when the deck transformations are known (the word is geodesic: no wandering). Their
-      // product is ill-conditioned when long generators cancel (see word_geodesic()); the trace then ends
-      // away from the lift it aimed at (`end_mismatch`, an a-posteriori error bound): above
-      // `mismatch_tolerance`, the loop itself is traced too (chart chaining: every point near the origin of
-      // its chart, consistent with the faces it crosses), and the result with the smaller mismatch is kept.
-      std::string deck_status;
-      Shortest_path_result<TriangleMesh> from_deck;
-      bool have_deck = false;
-      if(!deck_.empty()) {
-        try {
-          from_deck = word_geodesic(r.word);
-          have_deck = true;
-          if(from_deck.end_mismatch <= mismatch_tolerance(from_deck.length)) {
-            r.loop = std::move(from_deck.path); r.length = from_deck.length; r.used_geometry = true;
-          } else {
-            std::ostringstream os;
-            os << "product of the deck transformations: trace ends " << from_deck.end_mismatch << " from its aim; ";
-            deck_status = os.str();
-          }
-        } catch(const Precision_error& e) {
-          deck_status = std::string("product of the deck transformations: ") + e.what() + "; ";
-        }
-      }
-      if(!r.used_geometry) {
-        try {
-          Shortest_path_result<TriangleMesh> sp = shortest_homotopic_path(s_, loop, opt_.path_options);
-          if(have_deck && from_deck.end_mismatch < sp.end_mismatch) {
-            sp = std::move(from_deck);
-            deck_status += "the loop's own trace was farther from its aim";
-          } else {
-            deck_status += "traced from the loop instead";
-          }
-          r.loop = std::move(sp.path); r.length = sp.length; r.used_geometry = true;
-          if(!deck_.empty()) r.geometry_status = deck_status;
-        } catch(const Precision_error& e) {
-          if(have_deck) {
-            r.loop = std::move(from_deck.path); r.length = from_deck.length; r.used_geometry = true;
-            r.geometry_status = deck_status + "the loop: " + e.what() + "; the product's trace kept";
-          } else {
-            r.geometry_status = deck_status + "the loop: " + e.what();
-          }
-        }
+      try {
+        Shortest_path_result<TriangleMesh> sp = geodesic_loop(r.word, &loop, r.geometry_status);
+        r.loop = std::move(sp.path); r.length = sp.length; r.used_geometry = true;
+      } catch(const Precision_error& e) {
+        r.geometry_status = e.what();
       }
     }
     if(!r.used_geometry) r.loop = in; // (the input loop is copied only when it is the result)

@@ -201,7 +201,7 @@ private:
   cholmod_factor* L_ = nullptr;
   cholmod_dense *x_ = nullptr, *y_ = nullptr, *e_ = nullptr;
   int cholmod_version_ = -1;
-  double default_zrelax_[3] = {0.8, 0.1, 0.05};
+  double default_zrelax_[3] = {}; // CHOLMOD's defaults, read in the constructor
   bool started_ = false;
 #endif
   Sparse_solver kind_, used_ = Sparse_solver::SIMPLICIAL_LDLT;
