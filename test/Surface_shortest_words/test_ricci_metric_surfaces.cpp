@@ -13,6 +13,7 @@
 #endif
 
 #include "cgal_hc_test.h"
+#include "ssw_test_loops.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,23 +75,7 @@ CGAL_HC_TEST_CASE(ricci_flow_meshes_translation_lengths_and_words)
     for(std::size_t len : {10, 100, 1000, 10000}) {
       for(int trial = 0; trial < 2; ++trial) {
         // random closed walk from the base vertex
-        std::vector<IMesh::Halfedge_index> hs;
-        auto v = emb.base_vertex();
-        for(std::size_t i = 0; i < len; ++i) {
-          std::vector<IMesh::Halfedge_index> out;
-          for(auto h : CGAL::halfedges_around_source(v, m)) out.push_back(h);
-          hs.push_back(out[rng() % out.size()]);
-          v = m.target(hs.back());
-        }
-        std::map<IMesh::Vertex_index, IMesh::Halfedge_index> parent;
-        std::queue<IMesh::Vertex_index> q; q.push(emb.base_vertex()); parent[emb.base_vertex()] = IMesh::null_halfedge();
-        while(!q.empty()) {
-          auto u = q.front(); q.pop();
-          for(auto h : CGAL::halfedges_around_source(u, m))
-            if(!parent.count(m.target(h))) { parent[m.target(h)] = h; q.push(m.target(h)); }
-        }
-        // back to the base vertex along the BFS tree (opposite(parent) walks from v towards the base)
-        while(v != emb.base_vertex()) { auto h = parent[v]; hs.push_back(m.opposite(h)); v = m.source(h); }
+        const std::vector<IMesh::Halfedge_index> hs = ssw_test::random_loop(m, emb.base_vertex(), len, rng);
         const std::vector<IMesh::Halfedge_index>& walk = hs;
         CGAL::Surface_mesh_topology::Path_on_surface<IMesh> p1(m), p2(m);
         for(auto h : walk) p1.push_back(h);
@@ -249,24 +234,7 @@ CGAL_HC_TEST_CASE(ricci_handoff_on_every_demo_mesh)
       int agreed = 0, loops = 0, geometric = 0, geometric_differs = 0;
       for(std::size_t len : {20, 300}) {
         for(int trial = 0; trial < (big ? 1 : 2); ++trial) {
-          std::vector<IMesh::Halfedge_index> hs;
-          auto v = base;
-          for(std::size_t i = 0; i < len; ++i) {
-            std::vector<IMesh::Halfedge_index> out;
-            for(auto h : CGAL::halfedges_around_source(v, m)) out.push_back(h);
-            hs.push_back(out[rng() % out.size()]);
-            v = m.target(hs.back());
-          }
-          std::map<IMesh::Vertex_index, IMesh::Halfedge_index> parent;
-          std::queue<IMesh::Vertex_index> q; q.push(base); parent[base] = IMesh::null_halfedge();
-          while(!q.empty() && !parent.count(v)) {
-            auto u = q.front(); q.pop();
-            for(auto h : CGAL::halfedges_around_source(u, m))
-              if(!parent.count(m.target(h))) { parent[m.target(h)] = h; q.push(m.target(h)); }
-          }
-          std::vector<IMesh::Halfedge_index> back;
-          while(v != base) { auto h = parent[v]; back.push_back(m.opposite(h)); v = m.source(h); }
-          hs.insert(hs.end(), back.begin(), back.end());
+          const std::vector<IMesh::Halfedge_index> hs = ssw_test::random_loop(m, base, len, rng);
           const auto res = solver.solve(s.path_from_halfedges(hs));
           CGAL::Surface_mesh_topology::Path_on_surface<IMesh> p1(m), p2(m);
           for(auto h : hs) p1.push_back(h);

@@ -14,6 +14,7 @@
 
 #include "cgal_hc_test.h"
 #include "fuchsian_reference.h"
+#include "ssw_test_loops.h"
 
 #include <cmath>
 #include <map>
@@ -57,30 +58,9 @@ Path_on_surface pos(const Mesh& m, const std::vector<Mesh::Halfedge_index>& hs)
   return p;
 }
 
-// random closed walk from the base vertex: `len` random steps, then back by a BFS shortest edge path
 std::vector<Mesh::Halfedge_index> random_loop(const Mesh& m, Mesh::Vertex_index base, std::size_t len, std::mt19937& rng)
 {
-  std::vector<Mesh::Halfedge_index> hs;
-  Mesh::Vertex_index v = base;
-  for(std::size_t i = 0; i < len; ++i) {
-    std::vector<Mesh::Halfedge_index> out;
-    for(auto h : CGAL::halfedges_around_source(v, m)) out.push_back(h);
-    auto h = out[rng() % out.size()];
-    hs.push_back(h);
-    v = m.target(h);
-  }
-  // BFS from base, then walk back from v
-  std::map<Mesh::Vertex_index, Mesh::Halfedge_index> parent; // halfedge reaching the vertex
-  std::queue<Mesh::Vertex_index> q; q.push(base); parent[base] = Mesh::null_halfedge();
-  while(!q.empty()) {
-    auto u = q.front(); q.pop();
-    for(auto h : CGAL::halfedges_around_source(u, m))
-      if(!parent.count(m.target(h))) { parent[m.target(h)] = h; q.push(m.target(h)); }
-  }
-  std::vector<Mesh::Halfedge_index> back;
-  while(v != base) { auto h = parent[v]; back.push_back(m.opposite(h)); v = m.source(h); }
-  hs.insert(hs.end(), back.begin(), back.end());
-  return hs;
+  return ssw_test::random_loop(m, base, len, rng);
 }
 
 std::vector<Mesh::Halfedge_index> realize(const RPS& S, const SSW::Word& w)
