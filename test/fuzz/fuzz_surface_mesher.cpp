@@ -43,9 +43,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for(std::size_t i = 0; i < inserted.size(); i += 3)
       if(inserted[i] != HSM::Delaunay_triangulation_on_surface<>::null_index && t.is_vertex(inserted[i])) t.remove(inserted[i]);
     // (with a loop fewer insertions: loops crossing at tiny angles run to the work bound, slowly under ASan)
-    HSM::refine_Chew(t, HSM::parameters::maximum_circumradius(eps, HSM::parameters::maximum_number_of_insertions(with_loop ? 400 : 2000)));
+    const HSM::Refinement_statistics st =
+      HSM::refine_Chew(t, HSM::parameters::maximum_circumradius(eps, HSM::parameters::maximum_number_of_insertions(with_loop ? 400 : 2000)));
     std::string why;
     if(!t.is_valid(&why, 1e-6) || t.euler_characteristic() != 2 - 2 * genus) __builtin_trap();
+    if(st.status == HSM::Refinement_status::SUCCESS) {
+      // SUCCESS means what it says (issue 12): a simplicial complex whose every face has a circumradius <= eps,
+      // decided by the traits' exact predicate, independently of the refiner's own statistics
+      if(!t.is_simplicial_complex() || st.faces_failing_criteria != 0) __builtin_trap();
+      const CGAL::Poincare_disk_traits_2<K> gt;
+      const double c = std::cosh(eps);
+      for(std::size_t f : t.faces()) {
+        const auto& z = t.lift(f);
+        if(gt.compare_hyperbolic_circumradius_2_object()(z[0], z[1], z[2], c * c) == CGAL::LARGER) __builtin_trap();
+      }
+    }
   } catch(const CGAL::Numerical_error&) {
     // a documented outcome (a work bound of the walk or of the flips)
   }
