@@ -108,7 +108,7 @@ private:
   // ---------------------------------------------------------------- input checks
   // Exact check that p is a finite point of the open disk. For double input the common case costs one
   // comparison on 1 + |p|^2, which the static filters compute anyway.
-  static void check(const Point_2& p, const char* where) { Poincare_disk_internal::check_point_in_disk_fast(p, where); }
+  static void check(const Point_2& p, const char* where) { Poincare_disk_internal::check_point_in_disk(p, where); }
   // A threshold of a comparison predicate must be finite (a NaN would reach GMP's mpq_set_d: SIGFPE).
   static void check_threshold(const FT& t, const char* where)
   {

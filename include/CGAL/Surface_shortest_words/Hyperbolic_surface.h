@@ -245,6 +245,8 @@ public:
       s.in = s.out = corner_in(p, s.face);
       return s;
     }
+    if(!needs_corners_ && p.on_vertex && q.on_vertex && !p.has_corner() && !q.has_corner())
+      return vertex_step(p.v, q.v, hint);
     s.face = GT::null_face();
     if(needs_corners_ && !p.on_vertex && in_face(q, face(opposite(p.h, tm), tm))) {
       // both faces of p's edge may contain q (a face using a vertex twice): the crossing convention decides,
@@ -267,6 +269,34 @@ public:
     return s;
   }
 
+private:
+  // step() between the distinct vertices a and b of a mesh in which no face uses a vertex twice (the path
+  // of an edge loop: most of the steps of `steps()`), with the same choice of face as the general case (the
+  // hint, else the first face around a, in the order of `halfedges_around_target`, that has b as a vertex) and
+  // the corners read from the halfedge found instead of searched for
+  Step vertex_step(vertex_descriptor a, vertex_descriptor b, face_descriptor hint) const
+  {
+    const TriangleMesh& tm = mesh();
+    Step s;
+    if(hint != GT::null_face()) {
+      const halfedge_descriptor h0 = halfedge(hint, tm), h1 = next(h0, tm), h2 = next(h1, tm);
+      const halfedge_descriptor hs[3] = {h0, h1, h2};
+      halfedge_descriptor ca = GT::null_halfedge(), cb = GT::null_halfedge();
+      for(halfedge_descriptor h : hs) {
+        const vertex_descriptor t = target(h, tm);
+        if(t == a) ca = h; else if(t == b) cb = h;
+      }
+      if(ca != GT::null_halfedge() && cb != GT::null_halfedge()) { s.face = hint; s.in = ca; s.out = cb; return s; }
+    }
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(a, tm)) {
+      if(source(h, tm) == b) { s.face = face(h, tm); s.in = h; s.out = prev(h, tm); return s; }
+      const halfedge_descriptor n = next(h, tm);
+      if(target(n, tm) == b) { s.face = face(h, tm); s.in = h; s.out = n; return s; }
+    }
+    throw Invalid_path_error("Surface_shortest_words: consecutive path points do not lie in a common face");
+  }
+
+public:
   /// a face containing both points, preferring `hint` (the face of `step()`)
   face_descriptor common_face(const Point& p, const Point& q, face_descriptor hint) const { return step(p, q, hint).face; }
 

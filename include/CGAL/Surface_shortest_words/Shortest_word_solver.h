@@ -576,7 +576,7 @@ public:
   Word_result<TriangleMesh> solve(const Path& loop) const
   {
     if(loop.empty()) throw Invalid_path_error("Shortest_word_solver: empty loop");
-    for(const Point& q : loop) s_.check_point(q); // consecutive points: checked by crossing_word()
+    s_.check_point(loop.front()); s_.check_point(loop.back()); // the others: checked by crossing_word()
     if(!loop.front().on_vertex || loop.front().v != p_ || !loop.back().on_vertex || loop.back().v != p_)
       throw Invalid_path_error("Shortest_word_solver: the loop must start and end at the base vertex");
     Word_result<TriangleMesh> r;

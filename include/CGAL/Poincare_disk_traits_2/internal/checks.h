@@ -55,9 +55,16 @@ bool is_in_open_disk(const Point_2& p)
   return is_in_open_disk_xy(p.x(), p.y());
 }
 
+/// throws `Poincare_disk_domain_error` (naming `where` and the point) unless p is a finite point of the open unit
+/// disk (decided exactly); for double coordinates well inside the disk one comparison decides
+/// (1 + |p|^2 < 2 - 1e-13 in floating point implies |p| < 1 and finite coordinates).
 template <class Point_2>
 void check_point_in_disk(const Point_2& p, const char* where)
 {
+  if constexpr(std::is_same<typename std::decay<decltype(p.x())>::type, double>::value) {
+    const double w = 1.0 + p.x() * p.x() + p.y() * p.y();
+    if(w < 1.9999999999999) return;
+  }
   if(!is_in_open_disk(p)) {
     std::ostringstream os;
     os.precision(17);
@@ -65,18 +72,6 @@ void check_point_in_disk(const Point_2& p, const char* where)
        << ") is not in the open unit disk (|p| < 1 and finite coordinates are required)";
     throw Poincare_disk_domain_error(os.str());
   }
-}
-
-/// `check_point_in_disk`, with a one-comparison fast path for double coordinates well inside the disk
-/// (1 + |p|^2 < 2 - 1e-13 means |p| < 1 and finite), used by the predicates on their hot path.
-template <class Point_2>
-void check_point_in_disk_fast(const Point_2& p, const char* where)
-{
-  if constexpr(std::is_same<typename std::decay<decltype(p.x())>::type, double>::value) {
-    const double w = 1.0 + p.x() * p.x() + p.y() * p.y();
-    if(w < 1.9999999999999) return;
-  }
-  check_point_in_disk(p, where);
 }
 
 } // namespace Poincare_disk_internal

@@ -34,7 +34,7 @@ public:
   Point_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
   {
     const char* where = "Construct_hyperbolic_circumcenter_2";
-    check_point_in_disk_fast(p, where); check_point_in_disk_fast(q, where); check_point_in_disk_fast(r, where);
+    check_point_in_disk(p, where); check_point_in_disk(q, where); check_point_in_disk(r, where);
     if(!typename Traits::Is_Delaunay_hyperbolic()(p, q, r))
       throw Poincare_disk_domain_error("Construct_hyperbolic_circumcenter_2: the circumcircle is not compact "
                                        "(horocycle or hypercycle): no hyperbolic circumcenter");
@@ -55,8 +55,8 @@ public:
   typedef Point_2 result_type;
   Point_2 operator()(const Point_2& p, const Point_2& q) const
   {
-    check_point_in_disk_fast(p, "Construct_hyperbolic_midpoint_2");
-    check_point_in_disk_fast(q, "Construct_hyperbolic_midpoint_2");
+    check_point_in_disk(p, "Construct_hyperbolic_midpoint_2");
+    check_point_in_disk(q, "Construct_hyperbolic_midpoint_2");
     using namespace Poincare_disk_internal;
     const FT np = lift_n(p.x(), p.y()), nq = lift_n(q.x(), q.y());
     // S = (1-|p|^2)(1-|q|^2) (L(p) + L(q))
@@ -97,8 +97,8 @@ public:
   typedef Hyperbolic_segment_2 result_type;
   Hyperbolic_segment_2 operator()(const Point_2& p, const Point_2& q) const
   {
-    check_point_in_disk_fast(p, "Construct_hyperbolic_segment_2");
-    check_point_in_disk_fast(q, "Construct_hyperbolic_segment_2");
+    check_point_in_disk(p, "Construct_hyperbolic_segment_2");
+    check_point_in_disk(q, "Construct_hyperbolic_segment_2");
     return Hyperbolic_segment_2(p, q);
   }
 };
@@ -133,8 +133,8 @@ public:
   /// the two points of the unit circle on the bisector of p and q, in counterclockwise order seen from p
   static std::pair<Point_2, Point_2> ideal_endpoints(const Point_2& p, const Point_2& q)
   {
-    check_point_in_disk_fast(p, "Construct_hyperbolic_bisector_2");
-    check_point_in_disk_fast(q, "Construct_hyperbolic_bisector_2");
+    check_point_in_disk(p, "Construct_hyperbolic_bisector_2");
+    check_point_in_disk(q, "Construct_hyperbolic_bisector_2");
     using namespace Poincare_disk_internal;
     // { z : a |z|^2 - 2 z.v + a = 0 },  a = n_q - n_p, v = n_q p - n_p q; on |z| = 1: z.v = a
     const FT np = lift_n(p.x(), p.y()), nq = lift_n(q.x(), q.y());

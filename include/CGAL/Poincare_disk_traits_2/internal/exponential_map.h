@@ -27,7 +27,7 @@ public:
   typedef Vector_2 result_type;
   Vector_2 operator()(const Point_2& a, const Point_2& b) const
   {
-    check_point_in_disk_fast(a, "Construct_vector_2"); check_point_in_disk_fast(b, "Construct_vector_2");
+    check_point_in_disk(a, "Construct_vector_2"); check_point_in_disk(b, "Construct_vector_2");
     typedef Simple_cartesian<double>::Point_2 P;
     typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
     const P ad(CGAL::to_double(a.x()), CGAL::to_double(a.y()));
@@ -53,7 +53,7 @@ public:
   typedef Point_2 result_type;
   Point_2 operator()(const Point_2& a, const Vector_2& v) const
   {
-    check_point_in_disk_fast(a, "Construct_translated_point_2");
+    check_point_in_disk(a, "Construct_translated_point_2");
     typedef Simple_cartesian<double>::Point_2 P;
     typedef Poincare_disk_isometry_2<Simple_cartesian<double> > Iso;
     const double vx = CGAL::to_double(v.x()), vy = CGAL::to_double(v.y()), len = std::hypot(vx, vy);

@@ -26,7 +26,7 @@ public:
   typedef Point_2 result_type;
   Point_2 operator()(const Point_2& p) const
   {
-    check_point_in_disk_fast(p, "Construct_Klein_point_2");
+    check_point_in_disk(p, "Construct_Klein_point_2");
     const FT w = lift_w(p.x(), p.y());
     return Point_2(FT(2) * p.x() / w, FT(2) * p.y() / w);
   }
@@ -59,7 +59,7 @@ public:
   typedef Point_3 result_type;
   Point_3 operator()(const Point_2& p) const
   {
-    check_point_in_disk_fast(p, "Construct_hyperboloid_point_3");
+    check_point_in_disk(p, "Construct_hyperboloid_point_3");
     const FT n = lift_n(p.x(), p.y());
     return Point_3(FT(2) * p.x() / n, FT(2) * p.y() / n, lift_w(p.x(), p.y()) / n);
   }
@@ -80,7 +80,7 @@ public:
       throw Poincare_disk_domain_error("Construct_point_from_hyperboloid_2: T must be positive");
     const FT den = FT(1) + h.z();
     const Point_2 p(h.x() / den, h.y() / den);
-    check_point_in_disk_fast(p, "Construct_point_from_hyperboloid_2");
+    check_point_in_disk(p, "Construct_point_from_hyperboloid_2");
     return p;
   }
 };
@@ -95,7 +95,7 @@ public:
   typedef Point_2 result_type;
   Point_2 operator()(const Point_2& p) const
   {
-    check_point_in_disk_fast(p, "Construct_upper_half_plane_point_2");
+    check_point_in_disk(p, "Construct_upper_half_plane_point_2");
     const FT den = (FT(1) - p.x()) * (FT(1) - p.x()) + p.y() * p.y();
     return Point_2(FT(-2) * p.y() / den, lift_n(p.x(), p.y()) / den);
   }
@@ -131,7 +131,7 @@ public:
   typedef Circle_2 result_type;
   Circle_2 operator()(const Point_2& c, const FT& sinh2_half_radius) const
   {
-    check_point_in_disk_fast(c, "Construct_hyperbolic_circle_2");
+    check_point_in_disk(c, "Construct_hyperbolic_circle_2");
     if(!(sinh2_half_radius >= FT(0)))
       throw Poincare_disk_domain_error("Construct_hyperbolic_circle_2: negative or NaN radius");
     const FT s = sinh2_half_radius, nc = lift_n(c.x(), c.y()), den = FT(1) + s * nc;
