@@ -5,8 +5,6 @@
 #include <CGAL/Random.h>
 
 using namespace hsm2_test;
-namespace HSM = CGAL::Hyperbolic_surface_mesh_2;
-namespace HSMP = CGAL::Hyperbolic_surface_mesh_2::parameters;
 
 namespace {
 

@@ -24,8 +24,6 @@
 #include <string>
 
 using namespace hsm2_test;
-namespace HSM = CGAL::Hyperbolic_surface_mesh_2;
-namespace HSMP = CGAL::Hyperbolic_surface_mesh_2::parameters;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {

@@ -9,6 +9,9 @@
 #include <cmath>
 #include <string>
 
+namespace HSM = CGAL::Hyperbolic_surface_mesh_2;
+namespace HSMP = CGAL::Hyperbolic_surface_mesh_2::parameters;
+
 namespace hsm2_test {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;

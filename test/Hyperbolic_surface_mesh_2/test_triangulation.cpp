@@ -13,7 +13,6 @@
 #include <vector>
 
 using namespace hsm2_test;
-namespace HSM = CGAL::Hyperbolic_surface_mesh_2;
 typedef HSM::Delaunay_triangulation_on_surface<>::Geometry Geometry;
 
 typedef CGAL::Periodic_4_hyperbolic_Delaunay_triangulation_traits_2<> P4Traits;
@@ -211,6 +210,65 @@ CGAL_HC_TEST_CASE(removal)
   CGAL_HC_CHECK(removed == (vs.size() + 2) / 3);
   check_triangulation(t, 2);
   CGAL_HC_CHECK(t.number_of_vertices() == 201 - removed);
+}
+
+// Clusters of points 1e-16 to 1e-8 apart (near the origin, in the middle, next to a polygon corner), some given
+// several times, then removals and a refinement. Found by fuzz_surface_mesher (genus 3, points about 1.8e-6 from
+// the origin 1e-15 to 1e-10 apart): the same point given again became a new vertex (the duplicate test was only
+// relative to the tiny edges), and a removal then folded a recentred chart ("a chart is not counterclockwise").
+CGAL_HC_TEST_CASE(clustered_points_removal_and_refinement)
+{
+  CGAL::Random rng(11);
+  for(int genus = 2; genus <= 4; ++genus) {
+    const Polygon P = Polygon::regular(genus);
+    const Point corner = P.vertex(0);
+    const Point centres[3] = {Point(-1.8325506472120096e-06, -1.8325506472120096e-06), Point(0.21, -0.13),
+                              Point(corner.x() * (1 - 1e-3), corner.y() * (1 - 1e-3))};
+    for(const Point& c : centres) {
+      const bool near_corner = &c == &centres[2]; // (see the manual's limitations: chart drift near the corners)
+      DT t(P);
+      std::vector<std::size_t> vs;
+      std::vector<Point> given;
+      std::vector<bool> fresh;
+      for(int k = 0; k < 60; ++k) {
+        Point p = c;
+        if(k < 8) // a ring of radius 1e-3 first: small faces, so that the relative duplicate test is small too
+          p = Point(c.x() + 1e-3 * std::cos(k * CGAL_PI / 4), c.y() + 1e-3 * std::sin(k * CGAL_PI / 4));
+        else if(k % 4 != 0) {
+          const double step = std::pow(10.0, -rng.get_double(8, 16));
+          p = Point(c.x() + step * rng.get_int(-3, 4), c.y() + step * rng.get_int(-3, 4));
+        } else
+          p = given[rng.get_int(0, int(given.size()))]; // the same point again
+        const std::size_t nv = t.number_of_vertices();
+        const std::size_t v = t.insert_in_frame(p);
+        // a point that made a vertex is that vertex when given again (a point that snapped to a vertex may snap
+        // to a nearer one inserted later)
+        for(std::size_t q = 0; q < given.size(); ++q)
+          if(given[q] == p && fresh[q] && !near_corner) CGAL_HC_CHECK_MSG(v == vs[q], "a point given twice gave two vertices");
+        fresh.push_back(t.number_of_vertices() == nv + 1);
+        given.push_back(p); vs.push_back(v);
+        std::string why;
+        CGAL_HC_CHECK_MSG(t.is_valid(&why), why);
+      }
+      for(std::size_t i = 0; i < vs.size(); i += 3)
+        if(vs[i] != DT::null_index && t.is_vertex(vs[i])) {
+          t.remove(vs[i]);
+          std::string why;
+          CGAL_HC_CHECK_MSG(t.is_valid(&why), why << " after removing vertex " << vs[i]);
+        }
+      // the angles of a needle are as accurate as its vertices' positions (rounded to about 1e-16 in the charts,
+      // to about 1e-14 through the frame near the polygon's corners) over its shortest edge
+      double shortest = 1;
+      for(std::size_t f : t.faces()) for(int i = 0; i < 3; ++i) shortest = (std::min)(shortest, t.edge_length(f, i));
+      const double angle_tol = near_corner ? 1.0 : (std::max)(1e-7, 1e-14 / shortest);
+      std::cout << "  genus " << genus << " cluster at " << c << ": " << t.number_of_vertices()
+                << " vertices, shortest edge " << shortest << ", angle-sum tolerance " << angle_tol << "\n";
+      check_triangulation(t, genus, true, angle_tol);
+      const auto st = HSM::refine_Chew(t, HSMP::maximum_circumradius(0.76, HSMP::maximum_number_of_insertions(20000)));
+      CGAL_HC_CHECK_MSG(st.status == HSM::Refinement_status::SUCCESS, st);
+      check_triangulation(t, genus, true, angle_tol);
+    }
+  }
 }
 
 CGAL_HC_TEST_CASE(bolza_against_P4HT2_random)

@@ -78,6 +78,18 @@ public:
   /// (measured: 2e-9 after 150 insertions with many cocircular flips on the Bolza octagon, edges about 0.2),
   /// so a point given twice is recognized up to this relative distance.
   static constexpr double duplicate_distance = 1e-7;
+  /// The hyperbolic size of 100 units in the last place of a point `p` given in the frame: the resolution of
+  /// frame points. A point given in the frame (`locate_in_frame()`, `insert_in_frame()`) closer than this to a
+  /// vertex, or than `duplicate_distance` times the shortest edge of the face it falls in, is located on the
+  /// nearest such vertex (found by the fuzzer: points about 1e-15 apart given again became new vertices, then
+  /// needles; the relative test alone shrinks with the needles). About 4.4e-14 at the origin, 4e-12 at
+  /// |p| = 0.94. Points given in a chart (`locate()`, `insert()`) use the relative test only (charts of tiny
+  /// faces are accurate to their size: Ricci-flow metrics of real meshes have edges of 1e-10).
+  static double frame_resolution(const Point_2& p)
+  {
+    const double r2 = p.x() * p.x() + p.y() * p.y();
+    return 100 * 2 * std::numeric_limits<double>::epsilon() / (1 - r2);
+  }
 
   /// The result of `locate()`: the face, the point in its chart, and whether it is inside, on edge `index`,
   /// or on the vertex at corner `index`.
@@ -292,8 +304,10 @@ public:
   /// `blocking->first` is `null_index`): the point is then not visible from `start` inside the feature loops.
   /// With `to_chart` non-null, the transitions crossed are composed onto `*to_chart` (on return it maps the
   /// chart of `start` composed with the former `*to_chart` into the chart of the face found).
+  /// A point within `separation` (hyperbolic) of a vertex, or within `duplicate_distance` times the shortest
+  /// edge of the face found, is located on the nearest such vertex.
   Location locate(const Point_2& p, Face_index start, std::pair<Face_index, int>* blocking = nullptr,
-                  Isometry_2* to_chart = nullptr) const;
+                  Isometry_2* to_chart = nullptr, double separation = 0) const;
   /// Locates a point given in the frame of the reference triangulation (the polygon's frame; for a mesh
   /// input, the frame of its development): walks in the reference triangulation, then in this one. With
   /// `frame_to_chart` non-null, it receives the isometry from the frame to the chart of the face found.
@@ -302,8 +316,8 @@ public:
   /// Inserts the point `p` given in the chart of `start` (see `locate()`) and restores the Delaunay
   /// property. Returns the new vertex, or the existing one if `p` is (exactly) a lift of a vertex. Points on
   /// an edge split the edge. Returns `null_index` (no change) for a point on an edge whose two sides are one
-  /// face (not splittable), or for a point given on an edge (a `Location` of type `ON_EDGE`) that would leave
-  /// one of the four new faces not counterclockwise (exact test; a rounded point next to a tiny angle).
+  /// face (not splittable), or for a point that would leave one of the new faces not counterclockwise in its
+  /// chart (exact test on the rounded recentred corners; a rounded point next to a tiny angle or a needle).
   Vertex_index insert(const Point_2& p, Face_index start) { return insert(locate(p, start)); }
   /// inserts a located point (see `locate()`)
   Vertex_index insert(const Location& loc);
@@ -363,10 +377,12 @@ public:
 
   /// Removes the vertex `v` (flips its edges until it has degree 3, removes its star, restores the Delaunay
   /// property). Returns false and leaves a Delaunay triangulation with `v` if this is not possible (the last
-  /// vertex, or a star that wraps onto itself: too few vertices around `v`).
+  /// vertex, a star that wraps onto itself: too few vertices around `v`, or a merged face that would not be
+  /// counterclockwise in its rounded chart: a needle).
   bool remove(Vertex_index v);
 
-  /// Flips edge i of f if the flip is valid (not constrained, two distinct faces, strictly convex lifted quadrilateral).
+  /// Flips edge i of f if the flip is valid (not constrained, two distinct faces, strictly convex lifted
+  /// quadrilateral, both new faces counterclockwise in their rounded charts).
   /// Returns false otherwise. The two faces keep their indices: f gets corners (apex, source, neighbour apex),
   /// the neighbour gets (neighbour apex, target, apex). The triangulation may stop being Delaunay.
   bool flip(Face_index f, int i);
@@ -489,10 +505,15 @@ private:
     }
     return F.tr[i];
   }
-  /// sets face f to the triangle (a, b, c) of a common chart whose anchor is (ref, chart_to_ref); recentres it.
+  /// a triangle (a, b, c) of a common chart moved to the chart centred at its barycentre `o` (rounded)
+  struct Chart { std::array<Point_2, 3> z; Point_2 o; };
+  Chart recentred(const Point_2& a, const Point_2& b, const Point_2& c) const;
+  /// whether the rounded recentred triangle is counterclockwise (exact): every chart of the triangulation is
+  bool is_ccw(const Chart& c) const;
+  /// sets face f to the recentred triangle `ch` of a common chart whose anchor is (ref, chart_to_ref).
   /// Returns the recentring isometry (common chart -> chart of f), from which the callers compose the new
   /// transitions (no square root: see `set_transition()`)
-  Isometry_2 set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
+  Isometry_2 set_face(Face_index f, const Chart& ch,
                 Vertex_index va, Vertex_index vb, Vertex_index vc, Face_index ref, const Isometry_2& chart_to_ref);
   /// reference position of a point q of the chart of face f
   Reference_point reference_of(Face_index f, const Point_2& q) const
@@ -516,7 +537,18 @@ private:
   Vertex_index insert_on_edge(Face_index f, int i, const Point_2& p);
   bool merge_star_of_degree_3(Vertex_index v, const std::vector<Edge_ref>& st);
   bool quad_is_convex(Face_index f, int i) const;
-  bool near_corner(const Face& F, int i, const Point_2& p) const;
+  /// the hyperbolic distance from p to corner i of F if it is below max(separation, duplicate_distance *
+  /// shortest edge of F), else a negative number
+  double near_corner(const Face& F, int i, const Point_2& p, double separation) const;
+  /// max(separation, duplicate_distance * shortest edge of F)
+  double duplicate_tolerance(const Face& F, double separation) const;
+  /// whether p is within twice `tol` of the geodesic through edge i of F (chart of F)
+  bool near_edge_line(const Face& F, int i, const Point_2& p, double tol) const;
+  /// a point located in face r.face (or on one of its edges): located on the nearest vertex within the
+  /// duplicate tolerance (see `locate()`) if there is one, a corner of r.face or, behind needles, of a face
+  /// reached across edges whose geodesics pass that close to the point
+  void snap_to_near_vertex(Location& r, Isometry_2* to_chart, double separation) const;
+  static Point_2 moved_to_origin(const Point_2& o, const Point_2& z);
 
   Geom_traits gt_;
   std::vector<Face> faces_;

@@ -22,21 +22,38 @@ template <class G> auto graph_faces(const G& g) { return faces(g); }
 // ---------------------------------------------------------------- construction
 
 template <class Traits_>
-typename CGAL_HSM2_DT::Isometry_2 CGAL_HSM2_DT::set_face(Face_index f, const Point_2& a, const Point_2& b, const Point_2& c,
+typename CGAL_HSM2_DT::Chart CGAL_HSM2_DT::recentred(const Point_2& a, const Point_2& b, const Point_2& c) const
+{
+  Chart r;
+  r.o = Geometry::barycenter(a, b, c); // in the disk: a barycentre of points of the disk
+  r.z = {{moved_to_origin(r.o, a), moved_to_origin(r.o, b), moved_to_origin(r.o, c)}};
+  return r;
+}
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Point_2 CGAL_HSM2_DT::moved_to_origin(const Point_2& o, const Point_2& z)
+{
+  // t(z) = (z - o) / (1 - conj(o) z), with one division per point (t.apply_unchecked divides twice)
+  const double x = z.x(), y = z.y(), nr = x - o.x(), ni = y - o.y();
+  const double dr = 1 - o.x() * x - o.y() * y, di = o.y() * x - o.x() * y;
+  const double s = 1 / (dr * dr + di * di);
+  return Point_2((nr * dr + ni * di) * s, (ni * dr - nr * di) * s);
+}
+
+template <class Traits_>
+bool CGAL_HSM2_DT::is_ccw(const Chart& c) const
+{
+  return gt_.orientation_2_object()(c.z[0], c.z[1], c.z[2]) == CGAL::LEFT_TURN;
+}
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Isometry_2 CGAL_HSM2_DT::set_face(Face_index f, const Chart& ch,
                             Vertex_index va, Vertex_index vb, Vertex_index vc, Face_index ref,
                             const Isometry_2& chart_to_ref)
 {
   Face& F = faces_[f];
-  const Point_2 o = Geometry::barycenter(a, b, c); // in the disk: a barycentre of points of the disk
-  const Isometry_2 t(1, 0, -o.x(), -o.y());          // translation_to_origin(o) without its disk check
-  // t(z) = (z - o) / (1 - conj(o) z), with one division per point (t.apply_unchecked divides twice)
-  auto recentre = [&o](const Point_2& z) {
-    const double x = z.x(), y = z.y(), nr = x - o.x(), ni = y - o.y();
-    const double dr = 1 - o.x() * x - o.y() * y, di = o.y() * x - o.x() * y;
-    const double s = 1 / (dr * dr + di * di);
-    return Point_2((nr * dr + ni * di) * s, (ni * dr - nr * di) * s);
-  };
-  F.z = {{recentre(a), recentre(b), recentre(c)}};
+  const Isometry_2 t(1, 0, -ch.o.x(), -ch.o.y()); // translation_to_origin(o) without its disk check
+  F.z = ch.z;
   F.v = {{va, vb, vc}};
   F.tr_ok = 0; // the callers relink all three edges (which drops the neighbours' cached transitions too)
   F.ref = ref;
@@ -156,7 +173,7 @@ void CGAL_HSM2_DT::finish_construction()
 
 template <class Traits_>
 typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_index start, Edge_ref* blocking,
-                                                    Isometry_2* to_chart) const
+                                                    Isometry_2* to_chart, double separation) const
 {
   if(blocking) *blocking = Edge_ref(null_index, -1);
   internal::check_in_disk(p0, "Delaunay_triangulation_on_surface::locate");
@@ -183,7 +200,7 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
       for(int e = cross; e <= cross + 1; ++e) {
         const int i = e % 3;
         const double dx = F.z[i].x() - p.x(), dy = F.z[i].y() - p.y();
-        if(dx * dx + dy * dy < 1e-20 && near_corner(F, i, p)) { r.face = f; r.point = p; r.type = Location::ON_VERTEX; r.index = i; return r; }
+        if(dx * dx + dy * dy < 1e-20 && near_corner(F, i, p, separation) >= 0) { r.face = f; r.point = p; r.type = Location::ON_VERTEX; r.index = i; return r; }
       }
       p = transition(f, cross).apply_unchecked(p);
       if(to_chart) *to_chart = rescaled(transition(f, cross) * *to_chart);
@@ -205,11 +222,12 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
       came_from = F.ne[cross]; f = F.nb[cross]; continue;
     }
     r.face = f; r.point = p;
-    // a lift of a vertex, up to the rounding of the transitions crossed (relative to the face's size)
     for(int i = 0; i < 3; ++i)
-      if(F.z[i] == p || near_corner(F, i, p)) { r.type = Location::ON_VERTEX; r.index = i; return r; }
-    if(zeros == 0) { r.type = Location::IN_FACE; return r; }
-    if(zeros == 1) { r.type = Location::ON_EDGE; r.index = zero_edge; return r; }
+      if(F.z[i] == p) { r.type = Location::ON_VERTEX; r.index = i; return r; }
+    // a lift of a vertex, up to the rounding of the transitions crossed (relative to the face's size)
+    if(zeros == 0) r.type = Location::IN_FACE;
+    if(zeros == 1) { r.type = Location::ON_EDGE; r.index = zero_edge; }
+    if(zeros <= 1) { snap_to_near_vertex(r, to_chart, separation); return r; }
     // on two supporting geodesics but not a vertex: rounding of p; take the nearest corner
     int best = 0;
     for(int i = 1; i < 3; ++i) if(Geometry::distance(F.z[i], p) < Geometry::distance(F.z[best], p)) best = i;
@@ -219,20 +237,84 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
 }
 
 template <class Traits_>
-bool CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p) const
+bool CGAL_HSM2_DT::near_edge_line(const Face& F, int i, const Point_2& p, double tol) const
 {
-  // d(z_i, p) < duplicate_distance * (shortest edge). With s(x, y) = sinh^2(d(x, y) / 2) = |x - y|^2 / (n_x n_y)
-  // and asinh(t x) >= t asinh(x) for t in [0, 1]: s(z_i, p) >= 1e-12 s_min implies d >= 1e-6 d_min, no
-  // duplicate; the distances (transcendental) are computed only below that.
+  // hyperbolic distance d from p to the geodesic through edge i below 2 tol: with the edge's source moved to
+  // the origin (b its target, w the image of p), the geodesic is the diameter through b and
+  // sinh d = 2 |Im(w conj(b))| / (|b| (1 - |w|^2))
+  const Point_2 b = moved_to_origin(F.z[i], F.z[(i + 1) % 3]), w = moved_to_origin(F.z[i], p);
+  const double im = w.y() * b.x() - w.x() * b.y();
+  const double nb = std::sqrt(b.x() * b.x() + b.y() * b.y()), nw = 1 - w.x() * w.x() - w.y() * w.y();
+  return 2 * std::abs(im) < 2 * tol * nb * nw;
+}
+
+template <class Traits_>
+void CGAL_HSM2_DT::snap_to_near_vertex(Location& r, Isometry_2* to_chart, double separation) const
+{
+  double best = -1;
+  int best_corner = -1;
+  for(int c = 0; c < 3; ++c) {
+    const double d = near_corner(faces_[r.face], c, r.point, separation);
+    if(d >= 0 && (best < 0 || d < best)) { best = d; best_corner = c; }
+  }
+  // a vertex behind needles: a search over the faces reached across edges whose geodesics pass within the
+  // tolerance of p (usually none)
+  const double tol = duplicate_tolerance(faces_[r.face], separation);
+  bool any = false;
+  for(int i = 0; i < 3 && !any; ++i) any = near_edge_line(faces_[r.face], i, r.point, tol);
+  if(any) {
+    struct Item { Face_index f; Point_2 p; Isometry_2 m; }; // m: chart of r.face -> chart of f
+    std::vector<Item> items{Item{r.face, r.point, Isometry_2()}};
+    std::size_t best_item = 0;
+    for(std::size_t k = 0; k < items.size() && k < 64; ++k) {
+      const Item it = items[k];
+      const Face& F = faces_[it.f];
+      if(k > 0) // (r.face: tested above)
+        for(int c = 0; c < 3; ++c) {
+          const double d = near_corner(F, c, it.p, separation);
+          if(d >= 0 && (best < 0 || d < best)) { best = d; best_corner = c; best_item = k; }
+        }
+      for(int i = 0; i < 3; ++i) {
+        const Face_index g = F.nb[i];
+        if(!near_edge_line(F, i, it.p, tol) ||
+           std::find_if(items.begin(), items.end(), [g](const Item& x) { return x.f == g; }) != items.end()) continue;
+        const Isometry_2 t = transition(it.f, i);
+        items.push_back(Item{g, t.apply_unchecked(it.p), rescaled(t * it.m)});
+      }
+    }
+    if(best_corner >= 0 && best_item > 0) {
+      const Item& it = items[best_item];
+      if(to_chart) *to_chart = rescaled(it.m * *to_chart);
+      r.face = it.f; r.point = it.p;
+    }
+  }
+  if(best_corner >= 0) { r.type = Location::ON_VERTEX; r.index = best_corner; }
+}
+
+template <class Traits_>
+double CGAL_HSM2_DT::duplicate_tolerance(const Face& F, double separation) const
+{
+  return (std::max)(separation, duplicate_distance * (std::min)({Geometry::distance(F.z[0], F.z[1]),
+                                                                 Geometry::distance(F.z[1], F.z[2]),
+                                                                 Geometry::distance(F.z[2], F.z[0])}));
+}
+
+template <class Traits_>
+double CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p, double separation) const
+{
+  // d(z_i, p) < max(duplicate_distance * (shortest edge), separation). With s(x, y) = sinh^2(d(x, y) / 2)
+  // = |x - y|^2 / (n_x n_y) and asinh(t x) >= t asinh(x) for t in [0, 1]: s(z_i, p) >= 1e-12 s_min implies
+  // d >= 1e-6 d_min, and s >= separation^2 implies d >= 2 separation: no duplicate; the distances
+  // (transcendental) are computed only below that.
   auto s = [](const Point_2& x, const Point_2& y) {
     const double dx = x.x() - y.x(), dy = x.y() - y.y();
     return (dx * dx + dy * dy) / ((1 - x.x() * x.x() - x.y() * x.y()) * (1 - y.x() * y.x() - y.y() * y.y()));
   };
   const double s_min = (std::min)({s(F.z[0], F.z[1]), s(F.z[1], F.z[2]), s(F.z[2], F.z[0])});
-  if(s(F.z[i], p) >= 1e-12 * s_min) return false;
-  const double tol = duplicate_distance * (std::min)({Geometry::distance(F.z[0], F.z[1]), Geometry::distance(F.z[1], F.z[2]),
-                                                      Geometry::distance(F.z[2], F.z[0])});
-  return Geometry::distance(F.z[i], p) < tol;
+  const double sp = s(F.z[i], p);
+  if(sp >= 1e-12 * s_min && sp >= separation * separation) return -1;
+  const double d = Geometry::distance(F.z[i], p);
+  return d < duplicate_tolerance(F, separation) ? d : -1;
 }
 
 template <class Traits_>
@@ -261,7 +343,18 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p, 
   }
   const Isometry_2 to_f = faces_[f].to_ref.inverse();
   phi = rescaled(to_f * phi);
-  const Location r = locate(to_f.apply_unchecked(q), f, nullptr, frame_to_chart ? &phi : nullptr);
+  const double separation = frame_resolution(p);
+  Location r = locate(to_f.apply_unchecked(q), f, nullptr, &phi, separation);
+  // The walk composed transitions, which are inaccurate across tiny edges (their rotation is known to the
+  // rounding over the edge length: 1e-6 for edges of 1e-10). The anchor of the face found maps p directly (to
+  // rounding); when it gives the same lift (the two images within 1e-6), a second, local walk starts from there.
+  // Found by a test: points 1e-14 apart were located 1e-9 apart, so a point given again made a new vertex.
+  const Isometry_2 direct = rescaled(to_frame(r.face).inverse());
+  const Point_2 pd = direct.apply_unchecked(p);
+  if(Geometry::distance(pd, r.point) < 1e-6) {
+    phi = direct;
+    r = locate(pd, r.face, nullptr, &phi, separation);
+  }
   if(frame_to_chart) *frame_to_chart = phi;
   return r;
 }
@@ -283,13 +376,17 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_in_face(Face_index f, c
   // the transitions to the outer neighbours, before f is rebuilt (an edge glued to f itself is recomputed later)
   const Isometry_2 T[3] = {cached_transition(f, 0), cached_transition(f, 1), cached_transition(f, 2)};
   const Face F = faces_[f];
+  // the three new charts must be counterclockwise after their recentring (exact test on the rounded points: a
+  // point next to an edge of a needle, a rounding away from it, would fold a chart; such a point is not inserted)
+  const Chart ch[3] = {recentred(F.z[0], F.z[1], p), recentred(F.z[1], F.z[2], p), recentred(F.z[2], F.z[0], p)};
+  if(!is_ccw(ch[0]) || !is_ccw(ch[1]) || !is_ccw(ch[2])) return null_index;
   const Vertex_index w = new_vertex();
   vertices_[w].refp = reference_of(f, p);
   const Face_index f1 = new_face(), f2 = new_face();
   const Face_index nf[3] = {f, f1, f2};
-  const Isometry_2 t[3] = {set_face(f, F.z[0], F.z[1], p, F.v[0], F.v[1], w, F.ref, F.to_ref),
-                           set_face(f1, F.z[1], F.z[2], p, F.v[1], F.v[2], w, F.ref, F.to_ref),
-                           set_face(f2, F.z[2], F.z[0], p, F.v[2], F.v[0], w, F.ref, F.to_ref)};
+  const Isometry_2 t[3] = {set_face(f, ch[0], F.v[0], F.v[1], w, F.ref, F.to_ref),
+                           set_face(f1, ch[1], F.v[1], F.v[2], w, F.ref, F.to_ref),
+                           set_face(f2, ch[2], F.v[2], F.v[0], w, F.ref, F.to_ref)};
   auto remap = [&](Edge_ref e) -> Edge_ref {
     if(e.first != f) return e;
     return e.second == 0 ? Edge_ref(f, 0) : (e.second == 1 ? Edge_ref(f1, 0) : Edge_ref(f2, 0));
@@ -325,14 +422,17 @@ typename CGAL_HSM2_DT::Vertex_index CGAL_HSM2_DT::insert_on_edge(Face_index f, i
   const auto orient = gt_.orientation_2_object();
   if(orient(a, p, c) != CGAL::LEFT_TURN || orient(p, b, c) != CGAL::LEFT_TURN ||
      orient(b, p, d) != CGAL::LEFT_TURN || orient(p, a, d) != CGAL::LEFT_TURN) return null_index;
+  // and after their recentring (see insert_in_face())
+  const Chart ch[4] = {recentred(a, p, c), recentred(p, b, c), recentred(b, p, d), recentred(p, a, d)};
+  for(const Chart& x : ch) if(!is_ccw(x)) return null_index;
   const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
   const Vertex_index w = new_vertex();
   vertices_[w].refp = reference_of(f, p);
   const Face_index f1 = new_face(), g1 = new_face();
-  set_face(f, a, p, c, va, w, vc, F.ref, F.to_ref);
-  set_face(f1, p, b, c, w, vb, vc, F.ref, F.to_ref);
-  set_face(g, b, p, d, vb, w, vd, F.ref, F.to_ref);
-  set_face(g1, p, a, d, w, va, vd, F.ref, F.to_ref);
+  set_face(f, ch[0], va, w, vc, F.ref, F.to_ref);
+  set_face(f1, ch[1], w, vb, vc, F.ref, F.to_ref);
+  set_face(g, ch[2], vb, w, vd, F.ref, F.to_ref);
+  set_face(g1, ch[3], w, va, vd, F.ref, F.to_ref);
   auto remap = [&](Edge_ref e) -> Edge_ref {
     if(e.first == f && e.second == i1) return {f1, 1};
     if(e.first == f && e.second == i2) return {f, 2};
@@ -385,6 +485,10 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   const Face F = faces_[f], G = faces_[g];
   const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
   const Point_2 a = F.z[i], b = F.z[i1], c = F.z[i2], d = neighbor_apex(f, i);
+  // the two new charts must stay counterclockwise after their recentring (a flat quadrilateral, convex by a
+  // rounding, would fold one): else no flip
+  const Chart chf = recentred(c, a, d), chg = recentred(d, b, c);
+  if(!is_ccw(chf) || !is_ccw(chg)) return false;
   const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
   // the transitions of the quadrilateral's outer edges from the chart of f (composed through g's chart), before
   // the rebuild; an outer edge glued to f or g is recomputed later from the new charts
@@ -392,8 +496,8 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   const Isometry_2 Tfg = cached_transition(f, i);
   const Isometry_2 Tca = cached_transition(f, i2), Tbc = cached_transition(f, i1);
   const Isometry_2 Tad = cached_transition(g, j1) * Tfg, Tdb = cached_transition(g, j2) * Tfg;
-  const Isometry_2 tf = set_face(f, c, a, d, vc, va, vd, F.ref, F.to_ref);
-  const Isometry_2 tg = set_face(g, d, b, c, vd, vb, vc, F.ref, F.to_ref);
+  const Isometry_2 tf = set_face(f, chf, vc, va, vd, F.ref, F.to_ref);
+  const Isometry_2 tg = set_face(g, chg, vd, vb, vc, F.ref, F.to_ref);
   auto remap = [&](Edge_ref e) -> Edge_ref {
     if(e.first == f && e.second == i1) return {g, 1};
     if(e.first == f && e.second == i2) return {f, 0};
@@ -496,7 +600,8 @@ bool CGAL_HSM2_DT::merge_star_of_degree_3(Vertex_index v, const std::vector<Edge
   const int c1 = st[0].second, c2 = st[1].second, c3 = st[2].second;
   const Face F1 = faces_[f1], F2 = faces_[f2], F3 = faces_[f3];
   const Point_2 x1 = F1.z[(c1 + 1) % 3], x2 = F1.z[(c1 + 2) % 3], x3 = neighbor_apex(f1, (c1 + 2) % 3);
-  if(gt_.orientation_2_object()(x1, x2, x3) != CGAL::LEFT_TURN) return false;
+  const Chart ch = recentred(x1, x2, x3); // counterclockwise after the recentring (see insert_in_face())
+  if(gt_.orientation_2_object()(x1, x2, x3) != CGAL::LEFT_TURN || !is_ccw(ch)) return false;
   const Vertex_index v1 = F1.v[(c1 + 1) % 3], v2 = F1.v[(c1 + 2) % 3], v3 = F2.v[(c2 + 2) % 3];
   if(v1 == v || v2 == v || v3 == v) return false;
   auto remap = [&](Edge_ref e) -> Edge_ref {
@@ -508,7 +613,7 @@ bool CGAL_HSM2_DT::merge_star_of_degree_3(Vertex_index v, const std::vector<Edge
   const int e1 = (c1 + 1) % 3, e2 = (c2 + 1) % 3, e3 = (c3 + 1) % 3;
   const Edge_ref L1 = remap({F1.nb[e1], F1.ne[e1]}), L2 = remap({F2.nb[e2], F2.ne[e2]}), L3 = remap({F3.nb[e3], F3.ne[e3]});
   kill_face(f2); kill_face(f3);
-  set_face(f1, x1, x2, x3, v1, v2, v3, F1.ref, F1.to_ref);
+  set_face(f1, ch, v1, v2, v3, F1.ref, F1.to_ref);
   // the outer edges keep their constraints (the edges at v have none: checked by remove())
   faces_[f1].cons = (unsigned char)(((F1.cons >> e1) & 1u) | (((F2.cons >> e2) & 1u) << 1) | (((F3.cons >> e3) & 1u) << 2));
   link(f1, 0, L1.first, L1.second);

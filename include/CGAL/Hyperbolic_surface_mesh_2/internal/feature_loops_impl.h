@@ -70,10 +70,24 @@ typename CGAL_HSM2_DT::Feature_loop_result CGAL_HSM2_DT::insert_feature_loop(con
     else if(tr.type == Trace::CROSSING) {
       Location loc;
       loc.type = Location::ON_EDGE; loc.face = tr.face; loc.index = tr.index; loc.point = tr.point;
-      w = insert(loc);
+      snap_to_near_vertex(loc, nullptr, frame_resolution(tr.frame_point)); // (a crossing at a vertex, up to rounding)
       wf = tr.frame_point;
-      ++res.crossings;
-      ++res.vertices_inserted;
+      if(loc.type == Location::ON_VERTEX && faces_[loc.face].v[loc.index] == faces_[tr.face].v[(tr.index + 2) % 3]) {
+        // the other loop passes within rounding of the apex of the face, across the edge (e.g. two
+        // geodesics through one point, which is a vertex of this loop): it is rerouted through that vertex (its
+        // edge replaced by the two other edges of the face) and the segment is traced again
+        for(int e = 0; e < 3; ++e) {
+          const bool on = e != tr.index;
+          if(on && !is_constrained(tr.face, e)) ++res.constrained_edges;
+          set_constrained(tr.face, e, on);
+          set_constrained(faces_[tr.face].nb[e], faces_[tr.face].ne[e], on);
+        }
+        --res.constrained_edges;
+        todo.push_back(s);
+        continue;
+      }
+      if(loc.type == Location::ON_VERTEX) w = faces_[loc.face].v[loc.index];
+      else { w = insert(loc); ++res.crossings; ++res.vertices_inserted; }
     } else { // not an edge yet: split at the midpoint (conforming Delaunay refinement of the loop)
       wf = midpoint(s.a, s.b);
       const std::size_t nv = nv_;
@@ -123,7 +137,7 @@ typename CGAL_HSM2_DT::Trace CGAL_HSM2_DT::trace_segment(const Loop_segment& s) 
   const auto orient = gt_.orientation_2_object();
   Point_2 B = phi.apply_unchecked(s.b);
   const double len = Geometry::distance(faces_[la.face].z[la.index], B);
-  const double tol = duplicate_distance * len;
+  const double tol = (std::max)(frame_resolution(s.b), duplicate_distance * len);
   // 1. around u (twice): first the edge to v at B, then the corner whose wedge contains the direction to B
   Face_index g = la.face;
   int c = la.index;
@@ -171,8 +185,9 @@ typename CGAL_HSM2_DT::Trace CGAL_HSM2_DT::trace_segment(const Loop_segment& s) 
       const Point_2 X = Geometry::from_klein(Point_2(ka.x() + t * dx, ka.y() + t * dy));
       r.frame_point = rescaled(phi).inverse().apply_unchecked(X);
       r.face = g;
-      if(near_corner(F, k, X)) { r.type = Trace::VERTEX; r.index = k; return r; }
-      if(near_corner(F, (k + 1) % 3, X)) { r.type = Trace::VERTEX; r.index = (k + 1) % 3; return r; }
+      const double sep = frame_resolution(r.frame_point), dk = near_corner(F, k, X, sep), dk1 = near_corner(F, (k + 1) % 3, X, sep);
+      if(dk >= 0 && (dk1 < 0 || dk <= dk1)) { r.type = Trace::VERTEX; r.index = k; return r; }
+      if(dk1 >= 0) { r.type = Trace::VERTEX; r.index = (k + 1) % 3; return r; }
       r.type = Trace::CROSSING; r.index = k; r.point = X;
       return r;
     }
