@@ -510,6 +510,9 @@ private:
   Chart recentred(const Point_2& a, const Point_2& b, const Point_2& c) const;
   /// whether the rounded recentred triangle is counterclockwise (exact): every chart of the triangulation is
   bool is_ccw(const Chart& c) const;
+  /// whether segment (a, b) of one chart and (a2, b2) of another have the same hyperbolic length up to
+  /// 1e-7 (1 + length) (cheap: no transcendental function)
+  static bool same_length(const Point_2& a, const Point_2& b, const Point_2& a2, const Point_2& b2);
   /// sets face f to the recentred triangle `ch` of a common chart whose anchor is (ref, chart_to_ref).
   /// Returns the recentring isometry (common chart -> chart of f), from which the callers compose the new
   /// transitions (no square root: see `set_transition()`)

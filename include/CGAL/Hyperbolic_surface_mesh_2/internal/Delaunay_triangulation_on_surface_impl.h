@@ -41,6 +41,19 @@ typename CGAL_HSM2_DT::Point_2 CGAL_HSM2_DT::moved_to_origin(const Point_2& o, c
 }
 
 template <class Traits_>
+bool CGAL_HSM2_DT::same_length(const Point_2& a, const Point_2& b, const Point_2& a2, const Point_2& b2)
+{
+  // s = sinh^2(d / 2) = |x - y|^2 / ((1 - |x|^2)(1 - |y|^2)); d = 2 asinh(sqrt(s)), so |d1 - d2| <= 2 |sqrt(s1) -
+  // sqrt(s2)| and d <= 2 sqrt(s): this asks |d1 - d2| <= 1e-7 (1 + d1), well inside is_valid()'s 1e-6
+  auto s = [](const Point_2& x, const Point_2& y) {
+    const double dx = x.x() - y.x(), dy = x.y() - y.y();
+    return (dx * dx + dy * dy) / ((1 - x.x() * x.x() - x.y() * x.y()) * (1 - y.x() * y.x() - y.y() * y.y()));
+  };
+  const double r1 = std::sqrt(s(a, b)), r2 = std::sqrt(s(a2, b2));
+  return 2 * std::abs(r1 - r2) <= 1e-7 * (1 + 2 * r1);
+}
+
+template <class Traits_>
 bool CGAL_HSM2_DT::is_ccw(const Chart& c) const
 {
   return gt_.orientation_2_object()(c.z[0], c.z[1], c.z[2]) == CGAL::LEFT_TURN;
@@ -489,6 +502,9 @@ bool CGAL_HSM2_DT::flip(Face_index f, int i)
   // rounding, would fold one): else no flip
   const Chart chf = recentred(c, a, d), chg = recentred(d, b, c);
   if(!is_ccw(chf) || !is_ccw(chg)) return false;
+  // and d, mapped across edge i, must give g's outer edges their lengths (a transition across a tiny edge has
+  // its rotation known only to the rounding over the edge's length: a far apex may move; found by the fuzzer)
+  if(!same_length(a, d, G.z[j1], G.z[j2]) || !same_length(d, b, G.z[j2], G.z[j])) return false;
   const Vertex_index va = F.v[i], vb = F.v[i1], vc = F.v[i2], vd = G.v[j2];
   // the transitions of the quadrilateral's outer edges from the chart of f (composed through g's chart), before
   // the rebuild; an outer edge glued to f or g is recomputed later from the new charts
@@ -602,6 +618,13 @@ bool CGAL_HSM2_DT::merge_star_of_degree_3(Vertex_index v, const std::vector<Edge
   const Point_2 x1 = F1.z[(c1 + 1) % 3], x2 = F1.z[(c1 + 2) % 3], x3 = neighbor_apex(f1, (c1 + 2) % 3);
   const Chart ch = recentred(x1, x2, x3); // counterclockwise after the recentring (see insert_in_face())
   if(gt_.orientation_2_object()(x1, x2, x3) != CGAL::LEFT_TURN || !is_ccw(ch)) return false;
+  // x3 comes across an edge at v (tiny in a cluster): the merged face's outer edges must keep their lengths
+  // (see flip(); found by the fuzzer: a removal left glued edges of different lengths)
+  {
+    const int k2 = (c2 + 1) % 3, k3 = (c3 + 1) % 3; // the outer edges (v2, v3) of f2 and (v3, v1) of f3
+    if(!same_length(x2, x3, F2.z[k2], F2.z[(k2 + 1) % 3]) || !same_length(x3, x1, F3.z[k3], F3.z[(k3 + 1) % 3]))
+      return false;
+  }
   const Vertex_index v1 = F1.v[(c1 + 1) % 3], v2 = F1.v[(c1 + 2) % 3], v3 = F2.v[(c2 + 2) % 3];
   if(v1 == v || v2 == v || v3 == v) return false;
   auto remap = [&](Edge_ref e) -> Edge_ref {
