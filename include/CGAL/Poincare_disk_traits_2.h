@@ -592,7 +592,9 @@ public:
   /// Intersection of two geodesic segments given by their endpoints (`Segment_2`), as CGAL's
   /// `Constrained_triangulation_2` with `Exact_predicates_tag` asks for it: the intersection of the two Klein
   /// straight lines, mapped back to Poincare coordinates (one square root: rounded unless FT has an exact one).
-  /// Empty when the segments do not cross (decided with the exact `Orientation_2`).
+  /// Empty when the segments do not cross (decided with the exact `Orientation_2`). Throws `Numerical_error`
+  /// when a rounded crossing falls onto or outside the circle at infinity (crossings within about 1e-9 of it
+  /// on double coordinates); `Hyperbolic_mesh_2::insert_geodesic_pslg` rejects crossing segments before that.
   typedef Poincare_disk_internal::Intersect_2<Self> Intersect_2;
 
   // ---------------------------------------------------------------- models

@@ -250,6 +250,43 @@ CGAL_HC_TEST_CASE(constructions_rounded_on_epick)
   }
 }
 
+// Two geodesics crossing at |z| = 1 - 10^-k (k = 3..15): on double coordinates the crossing is returned inside
+// the disk, near the true one, or Numerical_error says it cannot be represented (issue 12: a NaN-point message
+// from the Klein conversion at 1 - 1e-9).
+CGAL_HC_TEST_CASE(crossings_near_the_circle_at_infinity)
+{
+  typedef CGAL::Poincare_disk_traits_2<Epick> Tr;
+  typedef Epick::Point_2 P;
+  typedef Epick::Segment_2 S;
+  const Tr tr;
+  std::size_t returned = 0, refused = 0;
+  for(int k = 3; k <= 15; ++k)
+    for(int a = 0; a < 8; ++a) {
+      const double r = 1 - std::pow(10.0, -k), th = 0.4 + a * 0.7;
+      const P X(r * std::cos(th), r * std::sin(th));
+      const CGAL::Poincare_disk_isometry_2<Epick> T = CGAL::Poincare_disk_isometry_2<Epick>::translation_to_origin(X).inverse();
+      auto chord = [&](double phi) {
+        return S(T.apply_unchecked(P(-0.5 * std::cos(phi), -0.5 * std::sin(phi))), T.apply_unchecked(P(0.5 * std::cos(phi), 0.5 * std::sin(phi))));
+      };
+      const S s1 = chord(0.3), s2 = chord(1.9);
+      bool inside = true;
+      for(const P& q : {s1.source(), s1.target(), s2.source(), s2.target()}) inside = inside && q.x() * q.x() + q.y() * q.y() < 1;
+      if(!inside) continue; // the end points themselves rounded onto the circle
+      try {
+        const auto x = tr.intersect_2_object()(s1, s2);
+        if(!x) continue; // rounded end points may no longer cross
+        const P* i = boost::get<P>(&*x);
+        CGAL_HC_CHECK(i != nullptr);
+        if(!i) continue;
+        CGAL_HC_CHECK(std::isfinite(i->x()) && std::isfinite(i->y()) && i->x() * i->x() + i->y() * i->y() < 1);
+        CGAL_HC_CHECK_MSG(std::hypot(i->x() - X.x(), i->y() - X.y()) < 1e-6, "k " << k << " crossing " << *i << " vs " << X);
+        ++returned;
+      } catch(const CGAL::Numerical_error&) { ++refused; }
+    }
+  std::cout << "  crossings near the circle: " << returned << " returned, " << refused << " refused (Numerical_error)\n";
+  CGAL_HC_CHECK(returned > 0 && refused > 0);
+}
+
 // ------------------------------------------------------------------------------------------------ bad input
 
 CGAL_HC_TEST_CASE(points_outside_the_disk_are_rejected)

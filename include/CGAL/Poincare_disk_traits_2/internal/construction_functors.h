@@ -19,6 +19,7 @@
 #include <boost/optional.hpp>
 #include <boost/variant.hpp>
 
+#include <cmath>
 #include <utility>
 
 namespace CGAL {
@@ -188,7 +189,15 @@ public:
     const FT ux = kb.x() - ka.x(), uy = kb.y() - ka.y(), vx = kd.x() - kc.x(), vy = kd.y() - kc.y();
     const FT den = ux * vy - uy * vx;
     const FT t = ((kc.x() - ka.x()) * vy - (kc.y() - ka.y()) * vx) / den;
-    return typename Traits::Construct_point_from_Klein_2()(Point_2(ka.x() + t * ux, ka.y() + t * uy));
+    const FT x = ka.x() + t * ux, y = ka.y() + t * uy;
+    // the crossing is inside the disk (exact orientations); with a rounded number type it may round onto or
+    // outside the circle at infinity (two geodesics crossing at |z| = 1 - 1e-9: |k| = 1 - 1e-18)
+    const double dx = CGAL::to_double(x), dy = CGAL::to_double(y);
+    if(!(std::isfinite(dx) && std::isfinite(dy)) || !(x * x + y * y < FT(1)))
+      throw Numerical_error("Intersect_2: the crossing of two geodesics is too close to the circle at infinity to "
+                            "be represented with this number type (use an exact number type, or constraints that "
+                            "cross farther inside)");
+    return typename Traits::Construct_point_from_Klein_2()(Point_2(x, y));
   }
 };
 
