@@ -311,6 +311,9 @@ public:
   /// Locates a point given in the frame of the reference triangulation (the polygon's frame; for a mesh
   /// input, the frame of its development): walks in the reference triangulation, then in this one. With
   /// `frame_to_chart` non-null, it receives the isometry from the frame to the chart of the face found.
+  /// \throws Poincare_disk_domain_error for a point not in the open disk; Numerical_error for a point whose
+  ///         reduction into the domain cannot be represented in double (about |p| > 1 - 1e-10: hyperbolic
+  ///         distance above 23.7 from the frame's origin).
   Location locate_in_frame(const Point_2& p, Isometry_2* frame_to_chart = nullptr) const;
 
   /// Inserts the point `p` given in the chart of `start` (see `locate()`) and restores the Delaunay
@@ -322,7 +325,7 @@ public:
   /// inserts a located point (see `locate()`)
   Vertex_index insert(const Location& loc);
   /// Inserts a point given in the frame of the reference triangulation (e.g. a point of the fundamental
-  /// polygon, or any of its lifts under the side pairings).
+  /// polygon, or any of its lifts under the side pairings). Throws as `locate_in_frame()`.
   Vertex_index insert_in_frame(const Point_2& p) { return insert(locate_in_frame(p)); }
   /// Inserts the points of a range given in the frame of the reference triangulation, in Hilbert order (each
   /// point located from the face of the previous one). Returns the number of new vertices. Every point is
@@ -542,6 +545,7 @@ private:
   bool quad_is_convex(Face_index f, int i) const;
   /// the hyperbolic distance from p to corner i of F if it is below max(separation, duplicate_distance *
   /// shortest edge of F), else a negative number
+  Location locate_in_frame_unchecked(const Point_2& p, Isometry_2* frame_to_chart) const;
   double near_corner(const Face& F, int i, const Point_2& p, double separation) const;
   /// max(separation, duplicate_distance * shortest edge of F)
   double duplicate_tolerance(const Face& F, double separation) const;

@@ -334,12 +334,38 @@ template <class Traits_>
 typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p, Isometry_2* frame_to_chart) const
 {
   internal::check_in_disk(p, "Delaunay_triangulation_on_surface::locate_in_frame");
+  // p is in the disk: an image of it rounded out of the disk on the way (a point within about 1e-11 of the
+  // circle at infinity; found by a test) is a precision limit, not bad input
+  try { return locate_in_frame_unchecked(p, frame_to_chart); }
+  catch(const Poincare_disk_domain_error& e) {
+    throw Numerical_error(std::string("Delaunay_triangulation_on_surface::locate_in_frame: the point is too close to "
+                                      "the circle at infinity to be located in double precision (") + e.what() + ")");
+  }
+}
+
+template <class Traits_>
+typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame_unchecked(const Point_2& p, Isometry_2* frame_to_chart) const
+{
   std::size_t o = 0;
   Isometry_2 phi = ref_.faces[0].to_frame.inverse(); // frame -> chart of the current face
   Point_2 q = phi.apply_unchecked(p);
   Isometry_2 m;
   ref_.walk(o, q, m, 100000);
-  phi = rescaled(m * phi);
+  // A point near the circle at infinity (found by the fuzzer: (1 - 1.1e-16, 0)) is reduced into the domain by
+  // an isometry moving points by its distance d from the origin: |alpha|^2 + |beta|^2 = cosh(d) |det|, and
+  // det = |alpha|^2 - |beta|^2 loses all its digits beyond d = 23.7 (cosh d = 1e10), i.e. |p| > 1 - 1e-10.
+  auto conditioned = [](const Isometry_2& t) {
+    const double a = t.alpha_real() * t.alpha_real() + t.alpha_imag() * t.alpha_imag();
+    const double b = t.beta_real() * t.beta_real() + t.beta_imag() * t.beta_imag();
+    return std::isfinite(a) && std::isfinite(b) && a - b > 1e-10 * (a + b);
+  };
+  auto refuse = []() {
+    throw Numerical_error("Delaunay_triangulation_on_surface::locate_in_frame: the point is too close to the circle "
+                          "at infinity (|p| > 1 - 1e-10) to be mapped into the fundamental domain in double precision");
+  };
+  const Isometry_2 mp = m * phi;
+  if(!conditioned(mp) || !std::isfinite(q.x()) || !std::isfinite(q.y())) refuse();
+  phi = rescaled(mp);
   // a live face anchored at o (or near it)
   Face_index f = ref_hint_[o];
   if(!is_face(f) || faces_[f].ref != o) {
@@ -355,6 +381,7 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p, 
     }
   }
   const Isometry_2 to_f = faces_[f].to_ref.inverse();
+  if(!conditioned(to_f * phi)) refuse();
   phi = rescaled(to_f * phi);
   const double separation = frame_resolution(p);
   Location r = locate(to_f.apply_unchecked(q), f, nullptr, &phi, separation);
@@ -362,10 +389,12 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate_in_frame(const Point_2& p, 
   // rounding over the edge length: 1e-6 for edges of 1e-10). The anchor of the face found maps p directly (to
   // rounding); when it gives the same lift (the two images within 1e-6), a second, local walk starts from there.
   // Found by a test: points 1e-14 apart were located 1e-9 apart, so a point given again made a new vertex.
-  const Isometry_2 direct = rescaled(to_frame(r.face).inverse());
+  // (the anchor of a face may be in another lift, far away: its isometry is then not used, and not rescaled)
+  const Isometry_2 direct = to_frame(r.face).inverse();
   const Point_2 pd = direct.apply_unchecked(p);
-  if(Geometry::distance(pd, r.point) < 1e-6) {
-    phi = direct;
+  if(std::isfinite(pd.x()) && std::isfinite(pd.y()) && pd.x() * pd.x() + pd.y() * pd.y() < 1 &&
+     Geometry::distance(pd, r.point) < 1e-6) {
+    phi = rescaled(direct);
     r = locate(pd, r.face, nullptr, &phi, separation);
   }
   if(frame_to_chart) *frame_to_chart = phi;
