@@ -664,23 +664,13 @@ bool CGAL_HSM2_DT::merge_star_of_degree_3(Vertex_index v, const std::vector<Edge
   };
   const int e1 = (c1 + 1) % 3, e2 = (c2 + 1) % 3, e3 = (c3 + 1) % 3;
   const Edge_ref L1 = remap({F1.nb[e1], F1.ne[e1]}), L2 = remap({F2.nb[e2], F2.ne[e2]}), L3 = remap({F3.nb[e3], F3.ne[e3]});
-  // the transitions of the outer edges from the old chart of f1, composed (as in flip()): recomputing them from
-  // the edges' end points would lose the rotation across short edges
-  auto outer = [&](Face_index g) { return g != f1 && g != f2 && g != f3; };
-  const bool o1 = outer(F1.nb[e1]), o2 = outer(F2.nb[e2]), o3 = outer(F3.nb[e3]);
-  const Isometry_2 T1 = cached_transition(f1, e1);
-  const Isometry_2 T2 = cached_transition(f2, e2) * cached_transition(f1, (c1 + 2) % 3);
-  const Isometry_2 T3 = cached_transition(f3, e3) * cached_transition(f1, c1);
   kill_face(f2); kill_face(f3);
-  const Isometry_2 ti = set_face(f1, ch, v1, v2, v3, F1.ref, F1.to_ref).inverse();
+  set_face(f1, ch, v1, v2, v3, F1.ref, F1.to_ref);
   // the outer edges keep their constraints (the edges at v have none: checked by remove())
   faces_[f1].cons = (unsigned char)(((F1.cons >> e1) & 1u) | (((F2.cons >> e2) & 1u) << 1) | (((F3.cons >> e3) & 1u) << 2));
   link(f1, 0, L1.first, L1.second);
   link(f1, 1, L2.first, L2.second);
   link(f1, 2, L3.first, L3.second);
-  if(o1) set_transition(f1, 0, T1 * ti);
-  if(o2) set_transition(f1, 1, T2 * ti);
-  if(o3) set_transition(f1, 2, T3 * ti);
   vertices_[v].alive = false; --nv_;
   std::vector<Edge_ref> s{{f1, 0}, {f1, 1}, {f1, 2}};
   restore_delaunay(s);
