@@ -516,6 +516,8 @@ private:
   /// whether segment (a, b) of one chart and (a2, b2) of another have the same hyperbolic length up to
   /// 1e-7 (1 + length) (cheap: no transcendental function)
   static bool same_length(const Point_2& a, const Point_2& b, const Point_2& a2, const Point_2& b2);
+  /// sinh^2(d(x, y) / 2) = |x - y|^2 / ((1 - |x|^2)(1 - |y|^2)), no transcendental function
+  static double sinh2_half(const Point_2& x, const Point_2& y);
   /// sets face f to the recentred triangle `ch` of a common chart whose anchor is (ref, chart_to_ref).
   /// Returns the recentring isometry (common chart -> chart of f), from which the callers compose the new
   /// transitions (no square root: see `set_transition()`)

@@ -41,15 +41,18 @@ typename CGAL_HSM2_DT::Point_2 CGAL_HSM2_DT::moved_to_origin(const Point_2& o, c
 }
 
 template <class Traits_>
+double CGAL_HSM2_DT::sinh2_half(const Point_2& x, const Point_2& y)
+{
+  const double dx = x.x() - y.x(), dy = x.y() - y.y();
+  return (dx * dx + dy * dy) / ((1 - x.x() * x.x() - x.y() * x.y()) * (1 - y.x() * y.x() - y.y() * y.y()));
+}
+
+template <class Traits_>
 bool CGAL_HSM2_DT::same_length(const Point_2& a, const Point_2& b, const Point_2& a2, const Point_2& b2)
 {
   // s = sinh^2(d / 2) = |x - y|^2 / ((1 - |x|^2)(1 - |y|^2)); d = 2 asinh(sqrt(s)), so |d1 - d2| <= 2 |sqrt(s1) -
   // sqrt(s2)| and d <= 2 sqrt(s): this asks |d1 - d2| <= 1e-7 (1 + d1), well inside is_valid()'s 1e-6
-  auto s = [](const Point_2& x, const Point_2& y) {
-    const double dx = x.x() - y.x(), dy = x.y() - y.y();
-    return (dx * dx + dy * dy) / ((1 - x.x() * x.x() - x.y() * x.y()) * (1 - y.x() * y.x() - y.y() * y.y()));
-  };
-  const double r1 = std::sqrt(s(a, b)), r2 = std::sqrt(s(a2, b2));
+  const double r1 = std::sqrt(sinh2_half(a, b)), r2 = std::sqrt(sinh2_half(a2, b2));
   return 2 * std::abs(r1 - r2) <= 1e-7 * (1 + 2 * r1);
 }
 
@@ -270,9 +273,15 @@ void CGAL_HSM2_DT::snap_to_near_vertex(Location& r, Isometry_2* to_chart, double
     const double d = near_corner(faces_[r.face], c, r.point, separation);
     if(d >= 0 && (best < 0 || d < best)) { best = d; best_corner = c; }
   }
+  // Points given in a chart (separation 0: the refiner's circumcentres, on the hot path) stop here.
+  if(best_corner >= 0 || separation <= 0) { if(best_corner >= 0) { r.type = Location::ON_VERTEX; r.index = best_corner; } return; }
   // a vertex behind needles: a search over the faces reached across edges whose geodesics pass within the
-  // tolerance of p (usually none)
-  const double tol = duplicate_tolerance(faces_[r.face], separation);
+  // tolerance of p (usually none). On this path of every location the tolerance is bounded without a
+  // transcendental function: d = 2 asinh(sqrt(s)) <= 2 sqrt(s), s = sinh^2(d / 2) (a larger bound only widens
+  // the search; near_corner() decides exactly)
+  const Face& R = faces_[r.face];
+  const double s_min = (std::min)({sinh2_half(R.z[0], R.z[1]), sinh2_half(R.z[1], R.z[2]), sinh2_half(R.z[2], R.z[0])});
+  const double tol = (std::max)(separation, duplicate_distance * 2 * std::sqrt(s_min));
   bool any = false;
   for(int i = 0; i < 3 && !any; ++i) any = near_edge_line(faces_[r.face], i, r.point, tol);
   if(any) {
@@ -319,12 +328,8 @@ double CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p, double 
   // = |x - y|^2 / (n_x n_y) and asinh(t x) >= t asinh(x) for t in [0, 1]: s(z_i, p) >= 1e-12 s_min implies
   // d >= 1e-6 d_min, and s >= separation^2 implies d >= 2 separation: no duplicate; the distances
   // (transcendental) are computed only below that.
-  auto s = [](const Point_2& x, const Point_2& y) {
-    const double dx = x.x() - y.x(), dy = x.y() - y.y();
-    return (dx * dx + dy * dy) / ((1 - x.x() * x.x() - x.y() * x.y()) * (1 - y.x() * y.x() - y.y() * y.y()));
-  };
-  const double s_min = (std::min)({s(F.z[0], F.z[1]), s(F.z[1], F.z[2]), s(F.z[2], F.z[0])});
-  const double sp = s(F.z[i], p);
+  const double s_min = (std::min)({sinh2_half(F.z[0], F.z[1]), sinh2_half(F.z[1], F.z[2]), sinh2_half(F.z[2], F.z[0])});
+  const double sp = sinh2_half(F.z[i], p);
   if(sp >= 1e-12 * s_min && sp >= separation * separation) return -1;
   const double d = Geometry::distance(F.z[i], p);
   return d < duplicate_tolerance(F, separation) ? d : -1;
