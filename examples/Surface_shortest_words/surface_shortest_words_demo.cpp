@@ -18,6 +18,7 @@
 #endif
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/IO/Poincare_disk_svg.h>
+#include <CGAL/Poincare_disk_traits_2.h>
 #if __has_include(<CGAL/Discrete_Ricci_flow.h>)
 #include <CGAL/Discrete_Ricci_flow.h>
 #define SSW_DEMO_RICCI_FLOW 1
@@ -38,6 +39,19 @@ typedef SSW::Hyperbolic_surface<Mesh, Length_map> Surface;
 typedef SSW::Shortest_word_solver<Mesh, Length_map> Solver;
 typedef RPS::Isometry Isometry;
 typedef RPS::Cplx Cplx;
+typedef CGAL::Epick::Point_2 Point_2;
+
+// the pictures use the public Poincare-disk types only: points as std::complex for drawing, isometries as
+// CGAL::Poincare_disk_isometry_2, the hyperbolic midpoint of Poincare_disk_traits_2
+static Point_2 to_point(const Cplx& z) { return Point_2(z.real(), z.imag()); }
+static Cplx to_cplx(const Point_2& p) { return Cplx(p.x(), p.y()); }
+static Cplx image(const Isometry& t, const Cplx& z) { return to_cplx(t(to_point(z))); }
+// the view centred at the hyperbolic midpoint of a and b
+static Isometry view_between(const Cplx& a, const Cplx& b)
+{
+  const CGAL::Poincare_disk_traits_2<CGAL::Epick> disk;
+  return Isometry::translation_to_origin(disk.construct_hyperbolic_midpoint_2_object()(to_point(a), to_point(b)));
+}
 
 int main(int argc, char** argv)
 {
@@ -93,22 +107,20 @@ int main(int argc, char** argv)
 
     // picture, centred at the midpoint of the lifted shortest loop: tiles rho(x) P near the loop, the word's
     // path along generator lifts (coloured by generator), the lifted shortest loop (black)
-    using SSW::internal::apply_isometry;
     std::vector<Isometry> prefixes{Isometry()};
     for(int l : res.word) {
       const Isometry& g = S.rho_generator(std::abs(l) - 1);
       prefixes.push_back((prefixes.back() * (l > 0 ? g : g.inverse())).normalized());
     }
-    const Cplx start = S.polygon[0], end = apply_isometry(prefixes.back(), start);
-    const Cplx mid = SSW::internal::point_along(start, end, 0.5 * SSW::internal::hyperbolic_distance(start, end));
-    const Isometry view = SSW::internal::to_origin(mid);
-    auto V = [&](const Cplx& z) { return apply_isometry(view, z); };
+    const Cplx start = S.polygon[0], end = image(prefixes.back(), start);
+    const Isometry view = view_between(start, end);
+    auto V = [&](const Cplx& z) { return image(view, z); };
     CGAL::Poincare_disk_svg_writer svg(900);
     svg.add_unit_circle();
     std::vector<Isometry> tiles;
     std::set<std::pair<long long, long long> > seen;
     auto add_tile = [&](const Isometry& t) {
-      const Cplx c = V(apply_isometry(t, Cplx(0, 0)));
+      const Cplx c = V(image(t, Cplx(0, 0)));
       if(seen.insert(std::make_pair(std::llround(c.real() * 1e5), std::llround(c.imag() * 1e5))).second) tiles.push_back(t);
     };
     for(const Isometry& pre : prefixes) {
@@ -126,12 +138,12 @@ int main(int argc, char** argv)
     }
     for(const Isometry& t : tiles) {
       std::vector<double> xy;
-      for(const Cplx& z : S.polygon) { const Cplx w = V(apply_isometry(t, z)); xy.push_back(w.real()); xy.push_back(w.imag()); }
+      for(const Cplx& z : S.polygon) { const Cplx w = V(image(t, z)); xy.push_back(w.real()); xy.push_back(w.imag()); }
       svg.add_geodesic_polygon(xy, "none", "#bbbbbb", 0.6);
     }
     const char* colours[4] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd"};
     for(std::size_t i = 0; i < res.word.size(); ++i) {
-      const Cplx a = V(apply_isometry(prefixes[i], start)), b = V(apply_isometry(prefixes[i + 1], start));
+      const Cplx a = V(image(prefixes[i], start)), b = V(image(prefixes[i + 1], start));
       svg.add_geodesic_segment(a.real(), a.imag(), b.real(), b.imag(), colours[std::abs(res.word[i]) - 1], 3.0);
     }
     const Cplx vs = V(start), ve = V(end);
@@ -192,12 +204,11 @@ int main(int argc, char** argv)
       CGAL::Poincare_disk_svg_writer psvg(900);
       psvg.add_unit_circle();
       // view centred at the midpoint of the diagonal P_0 P_2g
-      const Cplx d0 = SSW::internal::to_cplx(sys.polygon[0]), d1 = SSW::internal::to_cplx(sys.polygon[sys.polygon.size() / 2]);
-      const SSW::internal::Isometry pview = SSW::internal::to_origin(SSW::internal::point_along(d0, d1, 0.5 * SSW::internal::hyperbolic_distance(d0, d1)));
-      auto polygon_xy = [&](const SSW::internal::Isometry& t) {
+      const Isometry pview = view_between(to_cplx(sys.polygon[0]), to_cplx(sys.polygon[sys.polygon.size() / 2]));
+      auto polygon_xy = [&](const Isometry& t) {
         std::vector<double> xy;
         for(const auto& z : sys.polygon) {
-          const Cplx w = SSW::internal::apply_isometry(pview * t, SSW::internal::to_cplx(z));
+          const Cplx w = to_cplx((pview * t)(z));
           xy.push_back(w.real()); xy.push_back(w.imag());
         }
         return xy;
@@ -206,19 +217,19 @@ int main(int argc, char** argv)
         for(int b = -4; b <= 4; ++b) {
           if(a == 0) continue;
           if(b == -a) continue;
-          SSW::internal::Isometry t = a > 0 ? solver8.deck_transformation(std::size_t(a - 1)) : solver8.deck_transformation(std::size_t(-a - 1)).inverse();
+          Isometry t = a > 0 ? solver8.deck_transformation(std::size_t(a - 1)) : solver8.deck_transformation(std::size_t(-a - 1)).inverse();
           if(b != 0) t = t * (b > 0 ? solver8.deck_transformation(std::size_t(b - 1)) : solver8.deck_transformation(std::size_t(-b - 1)).inverse());
           psvg.add_geodesic_polygon(polygon_xy(t.normalized()), "none", "#bbbbbb", 0.6);
         }
-      psvg.add_geodesic_polygon(polygon_xy(SSW::internal::Isometry()), "#fff3d6", "#000000", 0.8);
+      psvg.add_geodesic_polygon(polygon_xy(Isometry()), "#fff3d6", "#000000", 0.8);
       const char* side_colours[4] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd"};
       for(std::size_t k = 0; k < sys.polygon.size(); ++k) {
-        const Cplx z0 = SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(sys.polygon[k]));
-        const Cplx z1 = SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(sys.polygon[(k + 1) % sys.polygon.size()]));
+        const Cplx z0 = to_cplx(pview(sys.polygon[k]));
+        const Cplx z1 = to_cplx(pview(sys.polygon[(k + 1) % sys.polygon.size()]));
         psvg.add_geodesic_segment(z0.real(), z0.imag(), z1.real(), z1.imag(), side_colours[std::abs(sys.relator[k]) - 1], 3.0);
       }
       for(const auto& z : sys.polygon) {
-        const Cplx w = SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(z));
+        const Cplx w = to_cplx(pview(z));
         psvg.add_point(w.real(), w.imag(), "#000", 3);
       }
       psvg.add_text(20, 30, "eight.off (Ricci flow): fundamental polygon bounded by the shortest geodesic loops", 16);
@@ -243,7 +254,7 @@ int main(int argc, char** argv)
         }
       CGAL::Poincare_disk_svg_writer tsvg(900);
       tsvg.add_unit_circle();
-      auto V = [&](const CGAL::Epick::Point_2& z) { return SSW::internal::apply_isometry(pview, SSW::internal::to_cplx(z)); };
+      auto V = [&](const Point_2& z) { return to_cplx(pview(z)); };
       for(const auto& z : gt.polygon_face_points) {
         std::vector<double> xy;
         for(int c = 0; c < 3; ++c) { const Cplx w = V(z[c]); xy.push_back(w.real()); xy.push_back(w.imag()); }

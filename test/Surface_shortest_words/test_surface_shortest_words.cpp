@@ -702,6 +702,44 @@ CGAL_HC_TEST_CASE(issue10_long_paths_and_loops_linear)
         CGAL_HC_CHECK_MSG(std::abs(res.length - d_ref) <= 1e-9 * (1 + d_ref), res.length << " vs " << d_ref);
       }
   }
+  // a fine mesh (12,800 faces, edges of about 0.05 units): random loops long enough for chart chaining,
+  // whose raw walk wanders over many charts' reach. The work is linear with a small constant: every face of
+  // the loop is developed a bounded number of times (the former fixed chunks of 256 points re-traced each
+  // merged piece of up to 10 units, about 20 faces embedded per loop edge on this mesh)
+  {
+    RPS F(g, 40);
+    Surface fs(F.mesh, F.length);
+    Solver fsolver(fs, F.base, F.generators);
+    CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> fcst(F.mesh);
+    std::mt19937 frng(4040);
+    for(std::size_t len : {100000, 300000}) {
+      const auto hs = random_loop(F.mesh, F.base, len, frng);
+      const Path loop = vertex_path(fs, hs);
+      const auto res = fsolver.solve(loop);
+      CGAL_HC_CHECK_MSG(res.used_geometry, res.geometry_status);
+      const double d_ref = based_length_q(g, res.word);
+      CGAL_HC_CHECK_MSG(std::abs(res.length - d_ref) <= 1e-9 * (1 + d_ref), res.length << " vs " << d_ref);
+      const auto based = SSW::shortest_loop_through_base(fs, loop);
+      CGAL_HC_CHECK_MSG(d_ref > 25, "the loop fits one chart: " << d_ref);
+      CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref), based.length << " vs " << d_ref);
+      CGAL_HC_CHECK(std::abs(fs.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
+      const SSW::Word wb = fsolver.word(based.path);
+      CGAL_HC_CHECK(wb.size() == res.word.size());
+      CGAL_HC_CHECK(fcst.are_base_point_homotopic(pos(F.mesh, hs), pos(F.mesh, fsolver.realize(wb))));
+      CGAL_HC_CHECK_MSG(based.embedded_faces <= 2 * hs.size(), based.embedded_faces << " faces embedded for " << hs.size() << " edges");
+      // out and back along the walk, then one more edge: homotopic to that edge, a geodesic
+      std::vector<Mesh::Halfedge_index> ob(hs.begin(), hs.begin() + std::ptrdiff_t(len / 2));
+      for(std::size_t i = ob.size(); i-- > 0;) ob.push_back(F.mesh.opposite(ob[i]));
+      ob.push_back(hs.front());
+      const auto sp = SSW::shortest_homotopic_path(fs, vertex_path(fs, ob));
+      const double edge = F.length[F.mesh.edge(hs.front())];
+      CGAL_HC_CHECK_MSG(std::abs(sp.length - edge) <= 1e-9, sp.length << " vs the edge " << edge);
+      CGAL_HC_CHECK_MSG(sp.embedded_faces <= 2 * ob.size(), sp.embedded_faces << " faces embedded for " << ob.size() << " edges");
+      std::cout << "  12,800 faces, random loop of " << hs.size() << " edges: based loop " << based.length << " (reference "
+                << d_ref << "), " << based.embedded_faces << " faces embedded; out and back: " << sp.embedded_faces
+                << " faces" << std::endl;
+    }
+  }
   // random loops of 10^4 and 10^5 edges at the base point
   for(std::size_t len : {10000, 100000}) {
     const auto hs = random_loop(S.mesh, S.base, len, rng);

@@ -18,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <string>
 
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_tolerance_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_max_lift_distance_t)
@@ -393,46 +394,82 @@ shortest_path_one_chart(const Surface& surface, const typename Surface::Path& pa
   return trace_geodesic(surface, path.front(), st.front(), T, path.back(), options, lifted);
 }
 
-// Geodesic pieces on a stack: the path is cut into short chunks, each shortened in one chart; a new piece
-// is merged with the top of the stack (shortened again as one path) while the merged geodesic is shorter
-// than `merge_length`, so backtracking and wandering cancel without any long lift.
+// Geodesic pieces on a stack: the path is cut into chunks, each shortened in one chart; a new piece is
+// merged with the top of the stack (shortened again as one path) while the merged geodesic is no longer than
+// `merge_length`, so backtracking and wandering cancel without any long lift. The chunks grow (doubling)
+// while they fit one chart and shrink (halving) when they do not, so a chunk lifts to about one chart's
+// reach whatever the mesh's edge length: the number of merges is about the length of the result over the
+// chart's reach, not the number of path points over a fixed chunk size. A merge whose lifted end point is
+// farther than `merge_length` is refused before its geodesic is traced.
+// Cost: O(n + m) for a path meeting n faces (each face developed a bounded number of times: a chunk that does
+// not fit is retried at half its size) and m faces crossed by the merged geodesics.
 template <class Surface>
 std::vector<typename Surface::Path>
 geodesic_pieces(const Surface& surface, const typename Surface::Path& path, const Shortest_path_options& options,
                 double merge_length, std::size_t& faces)
 {
   typedef typename Surface::Path Path;
+  typedef Shortest_path_result<typename Surface::Triangle_mesh> Result;
   std::vector<Path> stack;
-  std::vector<double> lengths;
   auto concat = [](const Path& a, const Path& b) { Path r(a); r.back() = b.front(); r.insert(r.end(), b.begin() + 1, b.end()); return r; };
-  std::function<void(const Path&)> push_chunk = [&](const Path& chunk) {
-    Shortest_path_result<typename Surface::Triangle_mesh> piece;
+  // the shortest path homotopic to `p` in one chart if its lift is at most `bound` away; false if it is
+  // farther, or if the lift or the trace fails (`error` then says why)
+  std::string error;
+  auto shorten = [&](const Path& p, double bound, Result& r) {
+    const std::vector<typename Surface::Step> st = surface.steps(p);
+    std::size_t lifted = 0;
     try {
-      piece = shortest_path_one_chart(surface, chunk, options);
-    } catch(const Precision_error&) {
-      if(chunk.size() <= 2) throw;
-      const std::size_t mid = chunk.size() / 2;
-      push_chunk(Path(chunk.begin(), chunk.begin() + std::ptrdiff_t(mid) + 1));
-      push_chunk(Path(chunk.begin() + std::ptrdiff_t(mid), chunk.end()));
-      return;
-    }
-    faces += piece.embedded_faces;
-    Path cur = piece.path; double len = piece.length;
-    while(!stack.empty()) {
-      try {
-        Shortest_path_result<typename Surface::Triangle_mesh> m = shortest_path_one_chart(surface, concat(stack.back(), cur), options);
-        faces += m.embedded_faces;
-        if(m.length > merge_length) break;
-        cur = m.path; len = m.length;
-        stack.pop_back(); lengths.pop_back();
-      } catch(const Precision_error&) { break; }
-    }
-    stack.push_back(cur); lengths.push_back(len);
+      const Cplx T = lift_end_point(surface, p, st, options, lifted);
+      faces += lifted;
+      lifted = 0;
+      if(!(internal::distance_to_origin(T) <= bound)) {
+        error = "Surface_shortest_words: the lifted path leaves the double precision range (max_lift_distance)";
+        return false;
+      }
+      r = trace_geodesic(surface, p.front(), st.front(), T, p.back(), options, 0);
+    } catch(const Precision_error& e) { faces += lifted; error = e.what(); return false; }
+    faces += r.embedded_faces;
+    return true;
   };
-  const std::size_t K = 256;
-  for(std::size_t i = 0; i + 1 < path.size(); i += K) {
+  // pushes a geodesic piece, merged with the top of the stack while the merge is no longer than merge_length
+  auto push = [&](Path cur) {
+    while(!stack.empty()) {
+      Result m;
+      if(!shorten(concat(stack.back(), cur), merge_length, m)) break;
+      cur = m.path;
+      stack.pop_back();
+    }
+    stack.push_back(cur);
+  };
+  const std::size_t min_chunk = 256, max_chunk = std::size_t(1) << 20;
+  std::size_t K = min_chunk;
+  bool grow = true;
+  for(std::size_t i = 0; i + 1 < path.size();) {
     const std::size_t e = (std::min)(path.size() - 1, i + K);
-    push_chunk(Path(path.begin() + std::ptrdiff_t(i), path.begin() + std::ptrdiff_t(e) + 1));
+    Result piece;
+    if(!shorten(Path(path.begin() + std::ptrdiff_t(i), path.begin() + std::ptrdiff_t(e) + 1), options.max_lift_distance, piece)) {
+      if(e - i <= 1) throw Precision_error(error);
+      K = (e - i) / 2;
+      grow = false;
+      continue;
+    }
+    // pushed in sub-pieces of at most `merge_length` (a chunk's geodesic may be longer): adjacent pieces
+    // on the stack are then each no longer than `merge_length` and not mergeable within it, so they meet
+    // at angles bounded away from a backtrack (a quasi-geodesic, as geodesic_of_frames() needs)
+    const Path& p = piece.path;
+    std::size_t from = 0;
+    double acc = 0;
+    for(std::size_t j = 0; j + 1 < p.size(); ++j) {
+      const double l = surface.path_length(Path{p[j], p[j + 1]});
+      const bool last = j + 2 == p.size();
+      if(acc > 0 && acc + l > merge_length) { push(Path(p.begin() + std::ptrdiff_t(from), p.begin() + std::ptrdiff_t(j) + 1)); from = j; acc = 0; }
+      acc += l;
+      if(last) push(Path(p.begin() + std::ptrdiff_t(from), p.end()));
+    }
+    i = e;
+    // (a chunk that did not fit is not tried again at once: one failed attempt per about two chunks)
+    if(grow) K = (std::min)(2 * K, max_chunk);
+    grow = true;
   }
   return stack;
 }
@@ -459,9 +496,10 @@ shortest_path_chained(const Surface& surface, const typename Surface::Path& path
 
   Double precision keeps a lifted point accurate to about 1e-16 e^d at distance d, so one chart serves
   only while the lifted path stays within `options.max_lift_distance` of its start. Longer paths (any
-  length) are lifted by chart chaining, without iteration: the path is cut into short chunks, each shortened
-  in one chart and merged on a stack with the previous geodesic piece while the merged geodesic is shorter
-  than 0.4 max_lift_distance (removing back-and-forth wandering); at each junction of two pieces a frame
+  length) are lifted by chart chaining, without iteration: the path is cut into chunks (their length adapted
+  so that each lifts to about one chart's reach), each shortened in one chart and merged on a stack with the
+  previous geodesic piece while the merged geodesic is shorter than 0.4 max_lift_distance (removing
+  back-and-forth wandering); at each junction of two pieces a frame
   (a chart centred at the junction), and between consecutive frames the isometry given by the development of
   the piece in one chart. The geodesic of the universal cover from the start to the lifted end point is then
   located in every frame from its two end points, carried there by sweeps of these isometries (a point far

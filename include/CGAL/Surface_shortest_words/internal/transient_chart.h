@@ -123,36 +123,11 @@ public:
 
   void push(halfedge_descriptor c)
   {
-    todo_.push_back(c);
-    while(!todo_.empty()) {
-      c = todo_.front(); todo_.pop_front();
-      if(!st_.empty() && st_.back().h == opposite(c, tm_)) { st_.pop_back(); continue; }
-      std::size_t rccw = 1, rcw = 1;
-      if(!st_.empty()) {
-        if(c == prev(opposite(st_.back().h, tm_), tm_)) rccw = st_.back().ccw + 1;
-        if(c == next(opposite(st_.back().h, tm_), tm_)) rcw = st_.back().cw + 1;
-      }
-      st_.push_back(Entry{c, rccw, rcw});
-      const std::size_t dccw = CGAL::halfedges_around_target(target(c, tm_), tm_).size();
-      const std::size_t dcw = CGAL::halfedges_around_target(source(c, tm_), tm_).size();
-      std::vector<halfedge_descriptor> rep;
-      if(2 * rccw > dccw) {
-        // counterclockwise around target(c): replace by the clockwise turn
-        // (corners, not faces: a face may meet the vertex at several corners)
-        halfedge_descriptor h = st_[st_.size() - rccw].h;
-        const halfedge_descriptor end = prev(opposite(c, tm_), tm_);
-        st_.resize(st_.size() - rccw);
-        while(h != end) { rep.push_back(next(h, tm_)); h = opposite(next(h, tm_), tm_); }
-      } else if(2 * rcw > dcw) {
-        // clockwise around source(c): replace by the counterclockwise turn
-        halfedge_descriptor h = prev(st_[st_.size() - rcw].h, tm_);
-        const halfedge_descriptor end = opposite(c, tm_);
-        st_.resize(st_.size() - rcw);
-        while(h != end) { rep.push_back(h); h = prev(opposite(h, tm_), tm_); }
-      } else {
-        continue;
-      }
-      todo_.insert(todo_.begin(), rep.begin(), rep.end());
+    for(;;) {
+      reduce(c);
+      if(todo_.empty()) return;
+      c = todo_.front();
+      todo_.pop_front();
     }
   }
 
@@ -165,6 +140,44 @@ public:
   }
 
 private:
+  std::size_t degree(typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) const
+  {
+    return CGAL::halfedges_around_target(v, tm_).size();
+  }
+
+  // pushes the crossing c, replacing the run it ends by the shorter turn if it is more than half a turn
+  // (the replacement crossings go to the front of todo_)
+  void reduce(halfedge_descriptor c)
+  {
+    if(!st_.empty() && st_.back().h == opposite(c, tm_)) { st_.pop_back(); return; }
+    std::size_t rccw = 1, rcw = 1;
+    if(!st_.empty()) {
+      if(c == prev(opposite(st_.back().h, tm_), tm_)) rccw = st_.back().ccw + 1;
+      if(c == next(opposite(st_.back().h, tm_), tm_)) rcw = st_.back().cw + 1;
+    }
+    st_.push_back(Entry{c, rccw, rcw});
+    // more than half a turn: 2 r > degree. A run of one crossing is that only around a vertex of degree 1,
+    // which is recognised without circulating (the degree is counted only for longer runs)
+    std::vector<halfedge_descriptor> rep;
+    if(rccw > 1 ? 2 * rccw > degree(target(c, tm_)) : opposite(next(c, tm_), tm_) == c) {
+      // counterclockwise around target(c): replace by the clockwise turn
+      // (corners, not faces: a face may meet the vertex at several corners)
+      halfedge_descriptor h = st_[st_.size() - rccw].h;
+      const halfedge_descriptor end = prev(opposite(c, tm_), tm_);
+      st_.resize(st_.size() - rccw);
+      while(h != end) { rep.push_back(next(h, tm_)); h = opposite(next(h, tm_), tm_); }
+    } else if(rcw > 1 ? 2 * rcw > degree(source(c, tm_)) : next(opposite(c, tm_), tm_) == c) {
+      // clockwise around source(c): replace by the counterclockwise turn
+      halfedge_descriptor h = prev(st_[st_.size() - rcw].h, tm_);
+      const halfedge_descriptor end = opposite(c, tm_);
+      st_.resize(st_.size() - rcw);
+      while(h != end) { rep.push_back(h); h = prev(opposite(h, tm_), tm_); }
+    } else {
+      return;
+    }
+    todo_.insert(todo_.begin(), rep.begin(), rep.end());
+  }
+
   const TriangleMesh& tm_;
   std::vector<Entry> st_;
   std::deque<halfedge_descriptor> todo_;
