@@ -644,6 +644,32 @@ CGAL_HC_TEST_CASE(issue10_no_precision_limit)
   }
 }
 
+// The word solver and shortest_loop_through_base() on the loop `hs` at the base point of the regular-polygon
+// surface S, checked against the quadruple-precision based length of the solver's word (beyond about 11,000
+// units cosh overflows even in quadruple precision: then the solver's shortest loop of the word, made of deck
+// transformations of the word and not a lift of the path, is the reference) and CGAL's homotopy test on the
+// word read from the based loop. Returns the reference length.
+static double check_based_loop(int g, const RPS& S, const Surface& s, const Solver& solver,
+                               const CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh>& cst,
+                               const std::vector<Mesh::Halfedge_index>& hs, SSW::Word_result<Mesh>& res,
+                               SSW::Shortest_path_result<Mesh>& based)
+{
+  const Path loop = vertex_path(s, hs);
+  res = solver.solve(loop);
+  CGAL_HC_CHECK_MSG(res.used_geometry, res.geometry_status);
+  const double q_ref = based_length_q(g, res.word);
+  const double d_ref = std::isfinite(q_ref) ? q_ref : res.length;
+  if(std::isfinite(q_ref)) CGAL_HC_CHECK_MSG(std::abs(res.length - q_ref) <= 1e-9 * (1 + q_ref), res.length << " vs " << q_ref);
+  based = SSW::shortest_loop_through_base(s, loop);
+  CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref), based.length << " vs " << d_ref);
+  CGAL_HC_CHECK(std::abs(s.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
+  const SSW::Word wb = solver.word(based.path);
+  CGAL_HC_CHECK(wb.size() == res.word.size());
+  CGAL_HC_CHECK(wb.empty() ? cst.is_contractible(pos(S.mesh, hs))
+                           : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(wb))));
+  return d_ref;
+}
+
 // issue 10, the path functions at any length without rounds: shortest_loop_through_base(),
 // shortest_homotopic_path() and shortest_homotopic_loop() on long inputs (chart chaining and the geodesic of
 // the universal cover). References independent of the path code: the quadruple-precision based and free
@@ -714,18 +740,10 @@ CGAL_HC_TEST_CASE(issue10_long_paths_and_loops_linear)
     std::mt19937 frng(4040);
     for(std::size_t len : {100000, 300000}) {
       const auto hs = random_loop(F.mesh, F.base, len, frng);
-      const Path loop = vertex_path(fs, hs);
-      const auto res = fsolver.solve(loop);
-      CGAL_HC_CHECK_MSG(res.used_geometry, res.geometry_status);
-      const double d_ref = based_length_q(g, res.word);
-      CGAL_HC_CHECK_MSG(std::abs(res.length - d_ref) <= 1e-9 * (1 + d_ref), res.length << " vs " << d_ref);
-      const auto based = SSW::shortest_loop_through_base(fs, loop);
+      SSW::Word_result<Mesh> res;
+      SSW::Shortest_path_result<Mesh> based;
+      const double d_ref = check_based_loop(g, F, fs, fsolver, fcst, hs, res, based);
       CGAL_HC_CHECK_MSG(d_ref > 25, "the loop fits one chart: " << d_ref);
-      CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref), based.length << " vs " << d_ref);
-      CGAL_HC_CHECK(std::abs(fs.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
-      const SSW::Word wb = fsolver.word(based.path);
-      CGAL_HC_CHECK(wb.size() == res.word.size());
-      CGAL_HC_CHECK(fcst.are_base_point_homotopic(pos(F.mesh, hs), pos(F.mesh, fsolver.realize(wb))));
       CGAL_HC_CHECK_MSG(based.embedded_faces <= 2 * hs.size(), based.embedded_faces << " faces embedded for " << hs.size() << " edges");
       // out and back along the walk, then one more edge: homotopic to that edge, a geodesic
       std::vector<Mesh::Halfedge_index> ob(hs.begin(), hs.begin() + std::ptrdiff_t(len / 2));
@@ -744,20 +762,10 @@ CGAL_HC_TEST_CASE(issue10_long_paths_and_loops_linear)
   for(std::size_t len : {10000, 100000}) {
     const auto hs = random_loop(S.mesh, S.base, len, rng);
     const Path loop = vertex_path(s, hs);
-    const auto res = solver.solve(loop);
-    CGAL_HC_CHECK_MSG(res.used_geometry, res.geometry_status);
-    // beyond about 11,000 units cosh overflows even in quadruple precision: then the solver's shortest loop
-    // of the word (deck transformations of the word, not a lift of the path) is the reference
-    const double q_ref = based_length_q(g, res.word);
-    const double d_ref = std::isfinite(q_ref) ? q_ref : res.length;
-    if(std::isfinite(q_ref)) CGAL_HC_CHECK(std::abs(res.length - q_ref) <= 1e-9 * (1 + q_ref));
-    const auto based = SSW::shortest_loop_through_base(s, loop);
-    CGAL_HC_CHECK_MSG(std::abs(based.length - d_ref) <= 1e-9 * (1 + d_ref), based.length << " vs " << d_ref);
-    CGAL_HC_CHECK(std::abs(s.path_length(based.path) - based.length) <= 1e-9 * (1 + d_ref));
-    const SSW::Word wb = solver.word(based.path);
-    CGAL_HC_CHECK(wb.size() == res.word.size());
-    CGAL_HC_CHECK(wb.empty() ? cst.is_contractible(pos(S.mesh, hs))
-                             : cst.are_base_point_homotopic(pos(S.mesh, hs), pos(S.mesh, solver.realize(wb))));
+    SSW::Word_result<Mesh> res;
+    SSW::Shortest_path_result<Mesh> based;
+    const double d_ref = check_based_loop(g, S, s, solver, cst, hs, res, based);
+    const bool quadruple_reference = std::isfinite(based_length_q(g, res.word));
     if(len == 10000) {
       const double l_ref = free_length_q(g, res.word);
       const auto freel = SSW::shortest_homotopic_loop(s, loop);
@@ -782,7 +790,7 @@ CGAL_HC_TEST_CASE(issue10_long_paths_and_loops_linear)
     CGAL_HC_CHECK(wc.empty() ? res.word.empty()
                              : cst.are_base_point_homotopic(pos(S.mesh, solver.realize(wc)), pos(S.mesh, solver.realize(res.word))));
     std::cout << "  random walk of " << len << " edges: based loop " << based.length << " (reference " << d_ref
-              << (std::isfinite(q_ref) ? ", quadruple holonomy" : ", the solver's loop of the word") << "), open path " << sp.length << ", " << sp.embedded_faces << " faces embedded" << std::endl;
+              << (quadruple_reference ? ", quadruple holonomy" : ", the solver's loop of the word") << "), open path " << sp.length << ", " << sp.embedded_faces << " faces embedded" << std::endl;
   }
 }
 
