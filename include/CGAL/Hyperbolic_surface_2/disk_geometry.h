@@ -33,15 +33,25 @@ struct Disk_geometry
 
   static FT squared_norm(const Point_2& p) { return p.x() * p.x() + p.y() * p.y(); }
 
-  /// hyperbolic distance, 2 asinh sqrt(|p-q|^2 / ((1-|p|^2)(1-|q|^2))) (accurate for small distances);
-  /// infinity when a point is not in the open disk
+  /// sinh^2(d / 2) = |p - q|^2 / ((1 - |p|^2)(1 - |q|^2)) for the hyperbolic distance d of (px, py) and
+  /// (qx, qy), without cancellation and without a transcendental function (monotone in d: compare these
+  /// instead of distances); infinity when a point is not in the open disk
+  static FT sinh2_half_distance(const FT& px, const FT& py, const FT& qx, const FT& qy)
+  {
+    const FT den = (FT(1) - (px * px + py * py)) * (FT(1) - (qx * qx + qy * qy));
+    if(!(den > 0)) return std::numeric_limits<FT>::infinity();
+    const FT dx = px - qx, dy = py - qy;
+    return (dx * dx + dy * dy) / den;
+  }
+  static FT sinh2_half_distance(const Point_2& p, const Point_2& q)
+  { return sinh2_half_distance(p.x(), p.y(), q.x(), q.y()); }
+
+  /// hyperbolic distance, 2 asinh sqrt(sinh^2(d / 2)) (accurate for small distances); infinity when a point
+  /// is not in the open disk
   static FT distance(const Point_2& p, const Point_2& q)
   {
     using std::sqrt; using std::asinh;
-    const FT den = (FT(1) - squared_norm(p)) * (FT(1) - squared_norm(q));
-    if(!(den > 0)) return std::numeric_limits<FT>::infinity();
-    const FT dx = p.x() - q.x(), dy = p.y() - q.y();
-    return 2 * asinh(sqrt((dx * dx + dy * dy) / den));
+    return 2 * asinh(sqrt(sinh2_half_distance(p, q)));
   }
 
   /// hyperbolic distance from the origin, 2 atanh |z|

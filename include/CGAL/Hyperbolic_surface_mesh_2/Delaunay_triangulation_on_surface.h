@@ -516,8 +516,8 @@ private:
   /// whether segment (a, b) of one chart and (a2, b2) of another have the same hyperbolic length up to
   /// 1e-7 (1 + length) (cheap: no transcendental function)
   static bool same_length(const Point_2& a, const Point_2& b, const Point_2& a2, const Point_2& b2);
-  /// sinh^2(d(x, y) / 2) = |x - y|^2 / ((1 - |x|^2)(1 - |y|^2)), no transcendental function
-  static double sinh2_half(const Point_2& x, const Point_2& y);
+  /// min over the edges of F of sinh^2(length / 2) (see `Geometry::sinh2_half_distance()`)
+  static double shortest_edge_sinh2(const Face& F);
   /// sets face f to the recentred triangle `ch` of a common chart whose anchor is (ref, chart_to_ref).
   /// Returns the recentring isometry (common chart -> chart of f), from which the callers compose the new
   /// transitions (no square root: see `set_transition()`)
@@ -545,12 +545,10 @@ private:
   Vertex_index insert_on_edge(Face_index f, int i, const Point_2& p);
   bool merge_star_of_degree_3(Vertex_index v, const std::vector<Edge_ref>& st);
   bool quad_is_convex(Face_index f, int i) const;
-  /// the hyperbolic distance from p to corner i of F if it is below max(separation, duplicate_distance *
-  /// shortest edge of F), else a negative number
   Location locate_in_frame_unchecked(const Point_2& p, Isometry_2* frame_to_chart) const;
-  double near_corner(const Face& F, int i, const Point_2& p, double separation) const;
-  /// max(separation, duplicate_distance * shortest edge of F)
-  double duplicate_tolerance(const Face& F, double separation) const;
+  /// the hyperbolic distance from p to corner i of F if it is below max(separation, duplicate_distance *
+  /// shortest edge of F), else a negative number; `s_min` = `shortest_edge_sinh2(F)`
+  static double near_corner(const Face& F, int i, const Point_2& p, double separation, double s_min);
   /// whether p is within twice `tol` of the geodesic through edge i of F (chart of F)
   bool near_edge_line(const Face& F, int i, const Point_2& p, double tol) const;
   /// a point located in face r.face (or on one of its edges): located on the nearest vertex within the

@@ -5,9 +5,11 @@
 #ifndef CGAL_HYPERBOLIC_MESH_2_INTERNAL_EXACT_QUALITY_H
 #define CGAL_HYPERBOLIC_MESH_2_INTERNAL_EXACT_QUALITY_H
 
+#include <CGAL/Hyperbolic_surface_2/disk_geometry.h>
 #include <CGAL/Poincare_disk_traits_2.h>
 #include <CGAL/Poincare_disk_traits_2/internal/filtered_evaluation.h>
 #include <CGAL/Poincare_disk_traits_2/internal/polynomials.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Uncertain.h>
 
 #include <algorithm>
@@ -134,21 +136,24 @@ double approximate_circumradius(const Point_2& p, const Point_2& q, const Point_
   return std::asinh(std::sqrt(s2));
 }
 
-/// A(p, q) = sinh^2(d(p, q) / 2) in double.
+/// the shared layer's disk geometry in double precision
+typedef Hyperbolic_surface_2::Disk_geometry<CGAL::Simple_cartesian<double> > Double_disk_geometry;
+
+/// A(p, q) = sinh^2(d(p, q) / 2) in double (+infinity if a rounded point is not in the open disk).
 template <class Point_2>
 double approximate_sinh2_half_distance(const Point_2& p, const Point_2& q)
 {
-  const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y()), qx = CGAL::to_double(q.x()),
-               qy = CGAL::to_double(q.y());
-  const double dx = px - qx, dy = py - qy;
-  return (dx * dx + dy * dy) / ((1 - px * px - py * py) * (1 - qx * qx - qy * qy));
+  return Double_disk_geometry::sinh2_half_distance(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                                   CGAL::to_double(q.x()), CGAL::to_double(q.y()));
 }
 
 /// Approximate hyperbolic distance.
 template <class Point_2>
 double approximate_distance(const Point_2& p, const Point_2& q)
 {
-  return 2.0 * std::asinh(std::sqrt(approximate_sinh2_half_distance(p, q)));
+  typedef Double_disk_geometry::Point_2 P;
+  return Double_disk_geometry::distance(P(CGAL::to_double(p.x()), CGAL::to_double(p.y())),
+                                        P(CGAL::to_double(q.x()), CGAL::to_double(q.y())));
 }
 
 /// Approximate central angle of the shortest edge of pqr (0 if the circumcircle is not compact), radians:

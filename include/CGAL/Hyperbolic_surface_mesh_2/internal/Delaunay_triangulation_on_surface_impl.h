@@ -41,10 +41,10 @@ typename CGAL_HSM2_DT::Point_2 CGAL_HSM2_DT::moved_to_origin(const Point_2& o, c
 }
 
 template <class Traits_>
-double CGAL_HSM2_DT::sinh2_half(const Point_2& x, const Point_2& y)
+double CGAL_HSM2_DT::shortest_edge_sinh2(const Face& F)
 {
-  const double dx = x.x() - y.x(), dy = x.y() - y.y();
-  return (dx * dx + dy * dy) / ((1 - x.x() * x.x() - x.y() * x.y()) * (1 - y.x() * y.x() - y.y() * y.y()));
+  return (std::min)({Geometry::sinh2_half_distance(F.z[0], F.z[1]), Geometry::sinh2_half_distance(F.z[1], F.z[2]),
+                     Geometry::sinh2_half_distance(F.z[2], F.z[0])});
 }
 
 template <class Traits_>
@@ -52,7 +52,7 @@ bool CGAL_HSM2_DT::same_length(const Point_2& a, const Point_2& b, const Point_2
 {
   // s = sinh^2(d / 2) = |x - y|^2 / ((1 - |x|^2)(1 - |y|^2)); d = 2 asinh(sqrt(s)), so |d1 - d2| <= 2 |sqrt(s1) -
   // sqrt(s2)| and d <= 2 sqrt(s): this asks |d1 - d2| <= 1e-7 (1 + d1), well inside is_valid()'s 1e-6
-  const double r1 = std::sqrt(sinh2_half(a, b)), r2 = std::sqrt(sinh2_half(a2, b2));
+  const double r1 = std::sqrt(Geometry::sinh2_half_distance(a, b)), r2 = std::sqrt(Geometry::sinh2_half_distance(a2, b2));
   return 2 * std::abs(r1 - r2) <= 1e-7 * (1 + 2 * r1);
 }
 
@@ -216,7 +216,7 @@ typename CGAL_HSM2_DT::Location CGAL_HSM2_DT::locate(const Point_2& p0, Face_ind
       for(int e = cross; e <= cross + 1; ++e) {
         const int i = e % 3;
         const double dx = F.z[i].x() - p.x(), dy = F.z[i].y() - p.y();
-        if(dx * dx + dy * dy < 1e-20 && near_corner(F, i, p, separation) >= 0) { r.face = f; r.point = p; r.type = Location::ON_VERTEX; r.index = i; return r; }
+        if(dx * dx + dy * dy < 1e-20 && near_corner(F, i, p, separation, shortest_edge_sinh2(F)) >= 0) { r.face = f; r.point = p; r.type = Location::ON_VERTEX; r.index = i; return r; }
       }
       p = transition(f, cross).apply_unchecked(p);
       if(to_chart) *to_chart = rescaled(transition(f, cross) * *to_chart);
@@ -269,8 +269,10 @@ void CGAL_HSM2_DT::snap_to_near_vertex(Location& r, Isometry_2* to_chart, double
 {
   double best = -1;
   int best_corner = -1;
+  const Face& R = faces_[r.face];
+  const double s_min = shortest_edge_sinh2(R);
   for(int c = 0; c < 3; ++c) {
-    const double d = near_corner(faces_[r.face], c, r.point, separation);
+    const double d = near_corner(R, c, r.point, separation, s_min);
     if(d >= 0 && (best < 0 || d < best)) { best = d; best_corner = c; }
   }
   // Points given in a chart (separation 0: the refiner's circumcentres, on the hot path) stop here.
@@ -279,8 +281,6 @@ void CGAL_HSM2_DT::snap_to_near_vertex(Location& r, Isometry_2* to_chart, double
   // tolerance of p (usually none). On this path of every location the tolerance is bounded without a
   // transcendental function: d = 2 asinh(sqrt(s)) <= 2 sqrt(s), s = sinh^2(d / 2) (a larger bound only widens
   // the search; near_corner() decides exactly)
-  const Face& R = faces_[r.face];
-  const double s_min = (std::min)({sinh2_half(R.z[0], R.z[1]), sinh2_half(R.z[1], R.z[2]), sinh2_half(R.z[2], R.z[0])});
   const double tol = (std::max)(separation, duplicate_distance * 2 * std::sqrt(s_min));
   bool any = false;
   for(int i = 0; i < 3 && !any; ++i) any = near_edge_line(faces_[r.face], i, r.point, tol);
@@ -291,11 +291,13 @@ void CGAL_HSM2_DT::snap_to_near_vertex(Location& r, Isometry_2* to_chart, double
     for(std::size_t k = 0; k < items.size() && k < 64; ++k) {
       const Item it = items[k];
       const Face& F = faces_[it.f];
-      if(k > 0) // (r.face: tested above)
+      if(k > 0) { // (r.face: tested above)
+        const double s_f = shortest_edge_sinh2(F);
         for(int c = 0; c < 3; ++c) {
-          const double d = near_corner(F, c, it.p, separation);
+          const double d = near_corner(F, c, it.p, separation, s_f);
           if(d >= 0 && (best < 0 || d < best)) { best = d; best_corner = c; best_item = k; }
         }
+      }
       for(int i = 0; i < 3; ++i) {
         const Face_index g = F.nb[i];
         if(!near_edge_line(F, i, it.p, tol) ||
@@ -314,25 +316,17 @@ void CGAL_HSM2_DT::snap_to_near_vertex(Location& r, Isometry_2* to_chart, double
 }
 
 template <class Traits_>
-double CGAL_HSM2_DT::duplicate_tolerance(const Face& F, double separation) const
-{
-  return (std::max)(separation, duplicate_distance * (std::min)({Geometry::distance(F.z[0], F.z[1]),
-                                                                 Geometry::distance(F.z[1], F.z[2]),
-                                                                 Geometry::distance(F.z[2], F.z[0])}));
-}
-
-template <class Traits_>
-double CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p, double separation) const
+double CGAL_HSM2_DT::near_corner(const Face& F, int i, const Point_2& p, double separation, double s_min)
 {
   // d(z_i, p) < max(duplicate_distance * (shortest edge), separation). With s(x, y) = sinh^2(d(x, y) / 2)
-  // = |x - y|^2 / (n_x n_y) and asinh(t x) >= t asinh(x) for t in [0, 1]: s(z_i, p) >= 1e-12 s_min implies
-  // d >= 1e-6 d_min, and s >= separation^2 implies d >= 2 separation: no duplicate; the distances
-  // (transcendental) are computed only below that.
-  const double s_min = (std::min)({sinh2_half(F.z[0], F.z[1]), sinh2_half(F.z[1], F.z[2]), sinh2_half(F.z[2], F.z[0])});
-  const double sp = sinh2_half(F.z[i], p);
+  // and asinh(t x) >= t asinh(x) for t in [0, 1]: s(z_i, p) >= 1e-12 s_min implies d >= 1e-6 d_min, and
+  // s >= separation^2 implies d >= 2 separation: no duplicate; the distances (transcendental) are computed
+  // only below that (d is monotone in s: the shortest edge is 2 asinh sqrt(s_min))
+  const double sp = Geometry::sinh2_half_distance(F.z[i], p);
   if(sp >= 1e-12 * s_min && sp >= separation * separation) return -1;
-  const double d = Geometry::distance(F.z[i], p);
-  return d < duplicate_tolerance(F, separation) ? d : -1;
+  const double d = 2 * std::asinh(std::sqrt(sp));
+  const double tol = (std::max)(separation, duplicate_distance * 2 * std::asinh(std::sqrt(s_min)));
+  return d < tol ? d : -1;
 }
 
 template <class Traits_>

@@ -185,7 +185,8 @@ typename CGAL_HSM2_DT::Trace CGAL_HSM2_DT::trace_segment(const Loop_segment& s) 
       const Point_2 X = Geometry::from_klein(Point_2(ka.x() + t * dx, ka.y() + t * dy));
       r.frame_point = rescaled(phi).inverse().apply_unchecked(X);
       r.face = g;
-      const double sep = frame_resolution(r.frame_point), dk = near_corner(F, k, X, sep), dk1 = near_corner(F, (k + 1) % 3, X, sep);
+      const double sep = frame_resolution(r.frame_point), s_min = shortest_edge_sinh2(F);
+      const double dk = near_corner(F, k, X, sep, s_min), dk1 = near_corner(F, (k + 1) % 3, X, sep, s_min);
       if(dk >= 0 && (dk1 < 0 || dk <= dk1)) { r.type = Trace::VERTEX; r.index = k; return r; }
       if(dk1 >= 0) { r.type = Trace::VERTEX; r.index = (k + 1) % 3; return r; }
       r.type = Trace::CROSSING; r.index = k; r.point = X;
