@@ -441,8 +441,10 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
     }
     stack.push_back(cur);
   };
-  const std::size_t min_chunk = 256, max_chunk = std::size_t(1) << 20;
-  std::size_t K = min_chunk;
+  // chunk sizes: the first chunk has 256 points; a chunk doubles after a success (up to 2^20; not right
+  // after a failure) and halves after a failure, down to single steps
+  const std::size_t first_chunk = 256, max_chunk = std::size_t(1) << 20;
+  std::size_t K = first_chunk;
   bool grow = true;
   for(std::size_t i = 0; i + 1 < path.size();) {
     const std::size_t e = (std::min)(path.size() - 1, i + K);
