@@ -6,7 +6,9 @@
 // time (wall and CPU), ONE factorization (analysis + numeric factorization + solve) of the Hessian of the final
 // metric with the same solver (wall and CPU; the analysis and the numeric part also separately), the ratios total
 // / one factorization, and the peak resident memory of the flow. Every (mesh, variant) run is a child process
-// (fork) of a parent that holds only the current mesh, so its peak memory is its own plus that mesh.
+// (fork) of a parent that holds only the current mesh (and returns its freed heap to the system before the
+// fork: `malloc_trim`), so its peak memory is its own plus that mesh; `input_MB` is the parent's resident memory
+// at the fork.
 //
 // Usage: benchmark_Discrete_Ricci_flow [max_faces [ldlt_max_faces [min_faces]]]   (defaults 3000000, 1500000, 0)
 // Meshes: CGAL's eight.off (genus 2), elephant.off (genus 3), data/meshes/elephant_cid.obj (genus 3, bad
@@ -16,7 +18,7 @@
 // Output: one line per (mesh, variant),
 //   RICCI mesh=<name> faces=<F> solver=<cholmod|ldlt|ldlt_ref> status=<s> iterations=<k> ... total_s=<t> cpu_s=<c>
 //         factorization_s=<f> factorization_cpu_s=<fc> total_over_factorization=<t/f> cpu_over_factorization=<c/fc>
-//         peak_MB=<m>
+//         peak_MB=<m> input_MB=<parent>
 // and per mesh `RATIO mesh=<name> ldlt_ref_over_cholmod=<r> ldlt_over_cholmod=<r'>` (wall and CPU).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -24,6 +26,7 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Discrete_Ricci_flow.h>
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,6 +35,7 @@
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -89,6 +93,16 @@ enum class Variant { CHOLMOD, LDLT, LDLT_REFERENCE };
 
 struct Run_time { double wall = -1, cpu = -1; };
 
+// the resident memory of this process (MB), from /proc/self/status
+static double resident_MB()
+{
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  while(std::getline(f, line))
+    if(line.rfind("VmRSS:", 0) == 0) return std::atof(line.c_str() + 6) / 1024;
+  return -1;
+}
+
 // runs the flow in a child process; returns its total times (or -1)
 static Run_time run(const std::string& name, const Mesh& mesh, Variant v)
 {
@@ -96,6 +110,8 @@ static Run_time run(const std::string& name, const Mesh& mesh, Variant v)
   Run_time result;
   if(pipe(fd) != 0) return result;
   std::cout.flush();
+  malloc_trim(0); // (the meshes built and freed before, e.g. the subdivision levels, would count in the child)
+  const double input_mb = resident_MB();
   const pid_t pid = fork();
   if(pid == 0) {
     close(fd[0]);
@@ -120,7 +136,7 @@ static Run_time run(const std::string& name, const Mesh& mesh, Variant v)
        << " factorization_s=" << f.wall << " (analysis " << f.analysis << " numeric " << f.numeric << ")"
        << " factorization_cpu_s=" << f.cpu << " total_over_factorization=" << t.wall / f.wall
        << " cpu_over_factorization=" << t.cpu / f.cpu << " total_over_numeric=" << t.wall / f.numeric
-       << " peak_MB=" << double(ru.ru_maxrss) / 1024 << "\n";
+       << " peak_MB=" << double(ru.ru_maxrss) / 1024 << " input_MB=" << input_mb << "\n";
     const std::string line = os.str();
     std::fwrite(line.data(), 1, line.size(), stdout);
     std::fflush(stdout);

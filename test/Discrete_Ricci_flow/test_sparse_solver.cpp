@@ -196,6 +196,58 @@ CGAL_HC_TEST_CASE(factorization_reuse_gives_the_same_metric)
   CGAL_HC_CHECK(with_cg > 0); // the conjugate gradients did run
 }
 
+// peak memory (issue 11): a factorization of a large matrix frees the engine's derived caches (lengths, corner
+// angles, curvatures) and recomputes them after. The recomputed caches equal those of an evaluation bit for bit,
+// and flows that free them at every factorization (threshold 0) follow the same iterates as flows that never do
+CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
+{
+  const Mesh input = read_cgal("eight.off");
+  auto start = [&](Mesh& mm, RF::internal::Flow_engine<Point_3>& eng) {
+    double mean = 0;
+    for(auto e : mm.edges()) mean += std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
+    mean /= double(mm.number_of_edges());
+    for(auto e : mm.edges()) // edges of about 0.6 hyperbolic units
+      eng.edge_data[e] = 0.3 / mean * std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
+  };
+  {
+    Mesh mm = input;
+    RF::internal::Flow_engine<Point_3> eng(mm, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, true);
+    start(mm, eng);
+    for(std::size_t i = 0; i < eng.u.size(); ++i) eng.u[i] = 0.05 * std::sin(0.7 * double(i)); // flips happen
+    eng.compute_lengths(); eng.compute_angles();
+    CGAL_HC_CHECK(eng.make_delaunay());
+    eng.compute_curvature();
+    const std::vector<double> len = eng.len, angle = eng.angle, K = eng.K;
+    eng.release_derived();
+    CGAL_HC_CHECK(eng.len.capacity() == 0 && eng.angle.capacity() == 0 && eng.K.capacity() == 0);
+    eng.restore_derived();
+    CGAL_HC_CHECK(eng.len == len && eng.K == K);
+    std::size_t differ = 0; // (border halfedges have no corner: compared on faces only)
+    for(auto h : mm.halfedges()) if(!mm.is_border(h) && eng.angle[h] != angle[h]) ++differ;
+    CGAL_HC_CHECK_MSG(differ == 0, differ << " corner angles differ after restore_derived()");
+  }
+  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
+  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  for(auto s : solvers) {
+    std::vector<double> u[2];
+    RF::Flow_statistics st[2];
+    for(int k = 0; k < 2; ++k) {
+      Mesh mm = input;
+      RF::internal::Flow_engine<Point_3> eng(mm, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, true);
+      start(mm, eng);
+      RF::internal::Newton_options o;
+      o.solver = s;
+      if(k == 1) o.release_caches_from = 0;
+      RF::internal::Newton_solver<Point_3>(eng, o, st[k]).run();
+      u[k] = eng.u;
+    }
+    CGAL_HC_CHECK_MSG(st[0].converged() && st[0].number_of_factorizations > 0, "solver " << int(s));
+    CGAL_HC_CHECK(st[0].status == st[1].status && st[0].iterations == st[1].iterations &&
+                  st[0].number_of_factorizations == st[1].number_of_factorizations);
+    CGAL_HC_CHECK_MSG(u[0] == u[1], "solver " << int(s) << ": the conformal factors differ");
+  }
+}
+
 // the default solver: SimplicialLDLT below 100,000 vertices, CHOLMOD (when configured) from there; an explicit
 // choice is kept; the flow reports the solver it used
 CGAL_HC_TEST_CASE(default_solver_by_size)

@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -276,28 +277,41 @@ void copy_connectivity(const TriangleMesh& tm, VPM vpm, VIM vim, Mesh& m, std::v
   }
 }
 
-/// the input lengths on the edges of m (from `elm`, or Euclidean from `vpm`) and the tm-edge -> m-edge pairs
+/// the input length of edge e of tm (from `elm`, or Euclidean from `vpm`), checked
+template <class TriangleMesh, class VPM, class ELM>
+double input_edge_length(const TriangleMesh& tm, VPM vpm, const ELM& elm,
+                         typename boost::graph_traits<TriangleMesh>::edge_descriptor e)
+{
+  double l;
+  if constexpr(std::is_same<ELM, CGAL::internal_np::Param_not_found>::value) {
+    const auto h = halfedge(e, tm);
+    l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+  } else
+    l = CGAL::to_double(get(elm, e));
+  if(!(l > 0) || !std::isfinite(l)) throw_metric_error("an edge has zero, negative or non-finite length");
+  return l;
+}
+
+/// the edge of m joining the images of the ends of the edge of tm with halfedge h (null if there is none)
+template <class TriangleMesh, class VIM, class Mesh>
+typename Mesh::Edge_index corresponding_edge(const TriangleMesh& tm, VIM vim, const Mesh& m,
+                                             const std::vector<typename Mesh::Vertex_index>& vmap,
+                                             typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+{
+  const auto mh = m.halfedge(vmap[get(vim, source(h, tm))], vmap[get(vim, target(h, tm))]);
+  return mh == Mesh::null_halfedge() ? typename Mesh::Edge_index() : m.edge(mh);
+}
+
+/// the input lengths on the edges of m (a copy of tm's connectivity), see `input_edge_length()`
 template <class TriangleMesh, class VPM, class VIM, class ELM, class Mesh>
 std::vector<double> input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& elm, const Mesh& m,
-                                  const std::vector<typename Mesh::Vertex_index>& vmap,
-                                  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor,
-                                                        typename Mesh::Edge_index> >& edge_corr)
+                                  const std::vector<typename Mesh::Vertex_index>& vmap)
 {
   std::vector<double> len(m.number_of_edges(), -1.0);
-  edge_corr.clear();
-  edge_corr.reserve(edges(tm).size());
   for(auto e : edges(tm)) {
-    const auto h = halfedge(e, tm);
-    const auto mh = m.halfedge(vmap[get(vim, source(h, tm))], vmap[get(vim, target(h, tm))]);
-    if(mh == Mesh::null_halfedge()) throw_mesh_error("inconsistent mesh connectivity");
-    double l;
-    if constexpr(std::is_same<ELM, CGAL::internal_np::Param_not_found>::value)
-      l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
-    else
-      l = CGAL::to_double(get(elm, e));
-    if(!(l > 0) || !std::isfinite(l)) throw_metric_error("an edge has zero, negative or non-finite length");
-    len[m.edge(mh)] = l;
-    edge_corr.emplace_back(e, m.edge(mh));
+    const auto me = corresponding_edge(tm, vim, m, vmap, halfedge(e, tm));
+    if(me == typename Mesh::Edge_index()) throw_mesh_error("inconsistent mesh connectivity");
+    len[me] = input_edge_length(tm, vpm, elm, e);
   }
   return len;
 }
@@ -422,25 +436,27 @@ void initial_state(Flow_engine<Point_3>& eng, const std::vector<double>& len, do
 }
 
 /// the lengths of the input connectivity under the final conformal factors, written to the user's map;
-/// returns whether they satisfy every triangle inequality of the input faces
-template <class TriangleMesh, class VIM, class OutMap, class Point_3, class EdgeCorr>
-bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow_engine<Point_3>& eng,
-                         const std::vector<double>& input_len, const Initial_flips<Point_3>& init,
-                         const EdgeCorr& edge_corr, double out_scale)
+/// returns whether they satisfy every triangle inequality of the input faces. The input lengths are read
+/// again from tm (`input_edge_length()`, divided by the flow's `unit`: the same values as at the start), so
+/// that the flow does not hold them.
+template <class TriangleMesh, class VPM, class VIM, class ELM, class OutMap, class Point_3>
+bool write_input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& elm, OutMap out,
+                         const Flow_engine<Point_3>& eng, const std::vector<typename CGAL::Surface_mesh<Point_3>::Vertex_index>& vmap,
+                         const Initial_flips<Point_3>& init, double unit, double out_scale)
 {
-  const auto& m = eng.m;
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
   // Penner coordinates (at u = 0) of the input connectivity: the input half-lengths, or, after geometric initial
-  // flips, the Ptolemy images of the Delaunay triangulation's half-lengths flipped back in reverse order
-  std::vector<double> penner0(m.number_of_edges());
-  for(const auto& ec : edge_corr) penner0[ec.second] = 0.5 * input_len[ec.second];
+  // flips, the Ptolemy images of the Delaunay triangulation's half-lengths flipped back in reverse order (on a
+  // copy of the flipped mesh, which is then the input connectivity again)
+  std::unique_ptr<Mesh> copy;
+  std::unique_ptr<Flow_engine<Point_3> > back;
   if(!init.flips.empty()) {
-    CGAL::Surface_mesh<Point_3> copy = init.mesh_after;
-    Flow_engine<Point_3> back(copy, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
-    back.edge_data = init.lambda_after;
-    back.compute_lengths();
-    back.compute_angles();
-    for(auto it = init.flips.rbegin(); it != init.flips.rend(); ++it) back.flip(*it);
-    for(const auto& ec : edge_corr) penner0[ec.second] = back.edge_data[ec.second];
+    copy.reset(new Mesh(init.mesh_after));
+    back.reset(new Flow_engine<Point_3>(*copy, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true));
+    back->edge_data = init.lambda_after;
+    back->compute_lengths();
+    back->compute_angles();
+    for(auto it = init.flips.rbegin(); it != init.flips.rend(); ++it) back->flip(*it);
   }
   // the lengths are kept here, keyed by the edge's vertex pair (the input has no multi-edge), and checked from
   // here: `out` may be write-only (the uniformization functions pass a constant map, which reads back 0)
@@ -450,14 +466,22 @@ bool write_input_lengths(const TriangleMesh& tm, VIM vim, OutMap out, const Flow
     return (a << 32) | b;
   };
   std::vector<std::pair<std::uint64_t, double> > written;
-  written.reserve(edge_corr.size());
-  for(const auto& ec : edge_corr) {
-    const auto h = halfedge(ec.first, tm);
+  written.reserve(edges(tm).size());
+  for(auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
     const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
-    const double l = eng.scheme == Scheme::VERTEX_SCALING
-                       ? length_from_lambda(eng.geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0[ec.second])
-                       : eng.len[ec.second]; // no flips for the circle packings: same connectivity
-    put(out, ec.first, out_scale * l);
+    auto edge_in = [&](const Mesh& mm) { // (mm has the input's connectivity)
+      const auto me = corresponding_edge(tm, vim, mm, vmap, h);
+      if(me == typename Mesh::Edge_index()) throw_mesh_error("inconsistent mesh connectivity");
+      return me;
+    };
+    double l;
+    if(eng.scheme == Scheme::VERTEX_SCALING) {
+      const double penner0 = back ? back->edge_data[edge_in(*copy)] : 0.5 * (input_edge_length(tm, vpm, elm, e) / unit);
+      l = length_from_lambda(eng.geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0);
+    } else
+      l = eng.len[edge_in(eng.m)]; // no flips for the circle packings: same connectivity
+    put(out, e, out_scale * l);
     written.emplace_back(key(h), l); // (checked in the flow's unit)
   }
   std::sort(written.begin(), written.end());
@@ -551,9 +575,8 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   Mesh& m = internal::Metric_access::mesh(res);
   std::vector<typename Mesh::Vertex_index> vmap;
   internal::copy_connectivity(tm, vpm, vim, m, vmap);
-  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor, typename Mesh::Edge_index> > edge_corr;
-  std::vector<double> input_len =
-    internal::input_lengths(tm, vpm, vim, get_parameter(np, CGAL::internal_np::ricci_edge_length_map_t_v), m, vmap, edge_corr);
+  const auto elm = get_parameter(np, CGAL::internal_np::ricci_edge_length_map_t_v);
+  std::vector<double> input_len = internal::input_lengths(tm, vpm, vim, elm, m, vmap);
   // the flow is invariant under a uniform scale of the input: it runs on lengths of mean about 1 (a mesh in
   // units of 1e80 or 1e-80 has areas and Heron products out of the range of double), and the conformal
   // factors are converted back to the input's lengths at the end
@@ -580,8 +603,9 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
 
   // initial state: a uniform scale making the triangles' total area about the target area, then Newton
   internal::Flow_engine<Point_3> eng(m, geo, scheme, do_flip);
-  eng.target = target_k;
+  eng.target = std::move(target_k); // (read back from the engine below: one copy)
   internal::initial_state(eng, input_len, geo == Background_geometry::EUCLIDEAN ? 1.0 : std::sqrt(target_area / input_area));
+  std::vector<double>().swap(input_len); // (not held during the flow: read again from tm at the end)
   internal::Newton_options o = options;
   if(geo == Background_geometry::EUCLIDEAN) { // u is defined up to a constant: pin u_0
     o.fixed.assign(vmap.size(), 0); o.fixed[0] = 1; o.fixed_in_error = true;
@@ -602,11 +626,11 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   const bool euclidean = geo == Background_geometry::EUCLIDEAN;
   const double out_scale = euclidean ? unit : 1.0;
   for(auto e : m.edges()) lengths[e] = out_scale * eng.len[e];
-  const bool valid = internal::write_input_lengths(tm, vim, edge_length_out, eng, input_len, init, edge_corr, out_scale);
+  const bool valid = internal::write_input_lengths(tm, vpm, vim, elm, edge_length_out, eng, vmap, init, unit, out_scale);
   std::vector<double> u = eng.u;
   const double du = scheme == Scheme::VERTEX_SCALING ? (euclidean ? 0.0 : -std::log(unit)) : (euclidean ? std::log(unit) : 0.0);
   for(double& x : u) x += du;
-  internal::Metric_access::set(res, geo, u, target_k, topo.genus, valid, scheme);
+  internal::Metric_access::set(res, geo, u, eng.target, topo.genus, valid, scheme);
   internal::Metric_access::set_flips(res, init.flips, eng.flip_log);
   st.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if(options.verbose)

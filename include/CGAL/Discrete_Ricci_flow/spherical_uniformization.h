@@ -442,8 +442,7 @@ spherical_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGA
   Mesh m;
   std::vector<V> vmap;
   internal::copy_connectivity(tm, vpm, vim, m, vmap);
-  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor, typename Mesh::Edge_index> > corr;
-  std::vector<double> len = internal::input_lengths(tm, vpm, vim, get_parameter(np, CGAL::internal_np::ricci_edge_length_map_t_v), m, vmap, corr);
+  std::vector<double> len = internal::input_lengths(tm, vpm, vim, get_parameter(np, CGAL::internal_np::ricci_edge_length_map_t_v), m, vmap);
   double area = 0; std::string msg;
   std::size_t initial_flips = 0;
   if(internal::degenerate_face(m, len, area, msg) != Mesh::null_face()) {

@@ -80,10 +80,9 @@ Ideal_surface_map<Point_3> ideal_surface_map(const TriangleMesh& tm, const Discr
   const auto vpm = get_const_property_map(CGAL::vertex_point, tm);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm);
   std::vector<typename Mesh::Vertex_index> vmap;
-  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::edge_descriptor, typename Mesh::Edge_index> > corr;
   m0.clear();
   DRF::copy_connectivity(tm, vpm, vim, m0, vmap);
-  const std::vector<double> len = DRF::input_lengths(tm, vpm, vim, CGAL::internal_np::Param_not_found(), m0, vmap, corr);
+  const std::vector<double> len = DRF::input_lengths(tm, vpm, vim, CGAL::internal_np::Param_not_found(), m0, vmap);
   return Ideal_surface_map<Point_3>(m0, len, metric.initial_flips(), metric.flips(), metric.conformal_factors(),
                                     metric.intrinsic_mesh());
 }

@@ -207,6 +207,21 @@ public:
     return true;
   }
 
+  // The caches derived from (u, edge_data): lengths, corner angles, curvatures (half of the engine's memory:
+  // 12 doubles per vertex at 2.6M faces). A large factorization frees them (the factor needs the memory) and
+  // `restore_derived()` recomputes them from the same state, with the functions of an evaluation.
+  void release_derived()
+  {
+    std::vector<double>().swap(len); std::vector<double>().swap(angle); std::vector<double>().swap(K);
+  }
+  void restore_derived()
+  {
+    len.assign(m.number_of_edges(), 0.0); angle.assign(m.number_of_halfedges(), 0.0); K.assign(m.number_of_vertices(), 0.0);
+    compute_lengths();
+    compute_angles();
+    compute_curvature();
+  }
+
   // ------------------------------------------------------------ curvature and Hessian
   // K_i = 2 pi - sum of angles (interior), pi - sum of angles (border: geodesic curvature)
   void compute_curvature()

@@ -183,12 +183,17 @@ private:
       cholmod_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
       if(!L_ || cm_.status < CHOLMOD_OK) return false;
       factorization_over_solve_ = cm_.fl / (4 * cm_.lnz + 4 * double(A.nrow) + 1);
+      // the analysis' workspace (6n integers) is larger than the numeric factorization's: freed, so that the
+      // factorization allocates only what it needs
+      cholmod_free_work(&cm_);
     }
     const auto t0 = std::chrono::steady_clock::now();
     cholmod_factorize(&A, L_, &cm_);
+    const int status = cm_.status;
+    cholmod_free_work(&cm_); // (the factorization's workspace, 14 bytes per row: not needed by the solves)
     numeric_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ++st.number_of_factorizations;
-    if(cm_.status != CHOLMOD_OK || L_->minor < L_->n) return false;
+    if(status != CHOLMOD_OK || L_->minor < L_->n) return false;
     used_ = Sparse_solver::SUPERNODAL_CHOLMOD; positive_definite_ = true; has_factor_ = true;
     return true;
   }
@@ -227,6 +232,8 @@ struct Newton_options
   std::vector<char> fixed;
   /// whether the curvature error of fixed vertices counts (true for the gauge vertex)
   bool fixed_in_error = true;
+  /// from this number of vertices the engine's derived caches are freed during a factorization (peak memory)
+  std::size_t release_caches_from = 500000;
   /// inexact Newton: solve the Newton system by conjugate gradients preconditioned with the last Cholesky
   /// factorization (of an earlier Hessian), and factorize again only when they do not reach the forcing
   /// tolerance within their budget; false: one factorization per Newton step (the reference)
@@ -241,7 +248,7 @@ class Newton_solver
 public:
   Newton_solver(Flow_engine<Point_3>& eng, const Newton_options& o, Flow_statistics& st)
     : eng_(eng), o_(o), st_(st), n_(int(eng.u.size())), g_(eng.u.size()), chol_(o.solver, eng.u.size()),
-      H_(n_, n_), rhs_(n_), delta_(n_)
+      H_(n_, n_), delta_(n_)
   {
     if(o_.fixed.empty()) o_.fixed.assign(eng.u.size(), 0);
   }
@@ -307,7 +314,6 @@ private:
   {
     const auto t0 = std::chrono::steady_clock::now();
     eng_.hessian_lower(H_, o_.fixed);
-    for(int i = 0; i < n_; ++i) rhs_[i] = o_.fixed[i] ? 0.0 : -g_[i];
     const double eta = (std::min)(0.1, (std::max)(err, 1e-8));
     const auto t1 = std::chrono::steady_clock::now();
     st_.hessian_seconds += std::chrono::duration<double>(t1 - t0).count();
@@ -330,8 +336,13 @@ private:
     last_cg_iterations_ = 0;
     from_cg_ = false;
     const auto t2 = std::chrono::steady_clock::now();
+    // large meshes: the factorization holds the peak memory of the flow; the engine's derived caches are
+    // freed meanwhile and recomputed after (at 2.6M faces: 103 MB, for about one evaluation's time)
+    const bool release = std::size_t(n_) >= o_.release_caches_from;
+    if(release) eng_.release_derived();
     bool ok = chol_.factorize(H_, eng_.pattern_version, st_);
-    if(ok) { delta_ = rhs_; ok = chol_.solve_in_place(delta_); }
+    if(ok) { right_hand_side(delta_); ok = chol_.solve_in_place(delta_); }
+    if(release) eng_.restore_derived();
     st_.solver_used = chol_.used();
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
     if(st_.first_factorization_seconds == 0) st_.first_factorization_seconds = dt;
@@ -339,31 +350,40 @@ private:
     return ok;
   }
 
+  // the right-hand side of the Newton system, -g (0 at fixed vertices), into b
+  void right_hand_side(Eigen::VectorXd& b) const
+  {
+    b.resize(n_);
+    for(int i = 0; i < n_; ++i) b[i] = o_.fixed[i] ? 0.0 : -g_[i];
+  }
+
   // preconditioned conjugate gradients on H delta = rhs from delta = 0, the preconditioner being the last
-  // factorization; true when ||residual|| <= eta ||rhs|| within `budget` iterations
+  // factorization; true when ||residual|| <= eta ||rhs|| within `budget` iterations. Three vectors besides
+  // delta: the preconditioned residual z and the product q = H p share one (z is dead once p is formed)
   bool conjugate_gradients(double eta, int budget, int& iterations)
   {
-    const double bnorm = rhs_.norm();
+    Eigen::VectorXd& r = cg_r_; Eigen::VectorXd& w = cg_w_; Eigen::VectorXd& p = cg_p_;
+    right_hand_side(r);
+    const double bnorm = r.norm();
     delta_.setZero();
     iterations = 0;
     if(bnorm == 0) return true;
-    Eigen::VectorXd& r = cg_r_; Eigen::VectorXd& z = cg_z_; Eigen::VectorXd& p = cg_p_; Eigen::VectorXd& q = cg_q_;
-    r = rhs_; z = r;
-    if(!chol_.solve_in_place(z)) return false;
-    p = z;
-    double rz = r.dot(z);
+    w = r; // z
+    if(!chol_.solve_in_place(w)) return false;
+    p = w;
+    double rz = r.dot(w);
     for(int k = 0; k < budget; ++k) {
-      q.noalias() = H_.selfadjointView<Eigen::Lower>() * p;
-      const double pq = p.dot(q);
+      w.noalias() = H_.selfadjointView<Eigen::Lower>() * p; // q
+      const double pq = p.dot(w);
       if(!(pq > 0) || !(rz > 0)) return false;
       const double alpha = rz / pq;
-      delta_ += alpha * p; r -= alpha * q;
+      delta_ += alpha * p; r -= alpha * w;
       ++st_.number_of_cg_iterations; ++iterations;
       if(r.norm() <= eta * bnorm) return delta_.allFinite();
-      z = r;
-      if(!chol_.solve_in_place(z)) return false;
-      const double rz_new = r.dot(z);
-      p = z + (rz_new / rz) * p;
+      w = r; // z
+      if(!chol_.solve_in_place(w)) return false;
+      const double rz_new = r.dot(w);
+      p = w + (rz_new / rz) * p;
       rz = rz_new;
     }
     return false;
@@ -461,7 +481,7 @@ private:
   std::vector<double> g_, u_old_;
   Sparse_cholesky chol_;
   Sparse_matrix H_;
-  Eigen::VectorXd rhs_, delta_, cg_r_, cg_z_, cg_p_, cg_q_;
+  Eigen::VectorXd delta_, cg_r_, cg_w_, cg_p_;
   bool from_cg_ = false;
   int last_cg_iterations_ = 0;      // CG iterations of the last accepted inexact direction
   double energy_ = 0;
