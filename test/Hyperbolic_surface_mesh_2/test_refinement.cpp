@@ -2,6 +2,12 @@
 // output is Delaunay, simplicial, of the right Euler characteristic, area and angle sums; bad options throw.
 #include "test_support.h"
 
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/Large_block_allocator.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
 #include <CGAL/Random.h>
 
 using namespace hsm2_test;
@@ -41,6 +47,33 @@ void check_refined(const DT& t, const HSM::Refinement_statistics& st, int genus,
 }
 
 } // namespace
+
+// The face array of a refinement past 4 MiB (16k faces) comes from the large-block allocator (aligned to
+// 2 MiB, huge pages advised): the refined triangulation, a copy of it, and a copy refined further are valid.
+CGAL_HC_TEST_CASE(large_face_arrays_and_copies)
+{
+  {
+    std::vector<double, HSM::internal::Large_block_allocator<double> > v(std::size_t(1) << 20), w(100);
+    CGAL_HC_CHECK(reinterpret_cast<std::uintptr_t>(v.data()) % (std::uintptr_t(1) << 21) == 0);
+    for(std::size_t i = 0; i < v.size(); ++i) v[i] = double(i);
+    v.resize(v.size() * 3 + 1, -1.0); // moves the block to a larger one
+    bool same = true;
+    for(std::size_t i = 0; i < (std::size_t(1) << 20); ++i) same = same && v[i] == double(i);
+    CGAL_HC_CHECK(same && v.back() == -1.0 && w.size() == 100);
+  }
+  DT t(Polygon::regular(2));
+  const double eps = 0.03;
+  const auto st = HSM::refine_Chew(t, HSMP::maximum_circumradius(eps));
+  CGAL_HC_CHECK(t.number_of_faces() > 16384);
+  check_refined(t, st, 2, true, eps, 0);
+  DT u = t;
+  CGAL_HC_CHECK(u.number_of_faces() == t.number_of_faces() && u.number_of_vertices() == t.number_of_vertices());
+  const auto su = HSM::refine_Chew(u, HSMP::maximum_circumradius(0.8 * eps));
+  check_refined(u, su, 2, true, 0.8 * eps, 0);
+  CGAL_HC_CHECK(u.number_of_faces() > t.number_of_faces());
+  std::string why;
+  CGAL_HC_CHECK_MSG(t.is_valid(&why), why);
+}
 
 CGAL_HC_TEST_CASE(refine_regular_polygons)
 {

@@ -12,6 +12,7 @@
 #include <CGAL/Hyperbolic_surface_2/disk_geometry.h>
 #include <CGAL/Hyperbolic_surface_2/hyperbolic_triangle.h>
 #include <CGAL/Hyperbolic_surface_mesh_2/Fundamental_polygon.h>
+#include <CGAL/Hyperbolic_surface_mesh_2/internal/Large_block_allocator.h>
 #include <CGAL/Hyperbolic_surface_mesh_2/internal/Reference_triangulation.h>
 #include <CGAL/Poincare_disk_traits_2.h>
 
@@ -558,8 +559,8 @@ private:
   static Point_2 moved_to_origin(const Point_2& o, const Point_2& z);
 
   Geom_traits gt_;
-  std::vector<Face> faces_;
-  std::vector<Vertex> vertices_;
+  std::vector<Face, internal::Large_block_allocator<Face> > faces_;
+  std::vector<Vertex, internal::Large_block_allocator<Vertex> > vertices_;
   std::vector<Face_index> free_faces_;
   std::size_t nf_ = 0, nv_ = 0, flips_ = 0;
   internal::Reference_triangulation<Geom_traits> ref_;

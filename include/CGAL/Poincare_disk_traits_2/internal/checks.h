@@ -55,16 +55,13 @@ bool is_in_open_disk(const Point_2& p)
   return is_in_open_disk_xy(p.x(), p.y());
 }
 
-/// throws `Poincare_disk_domain_error` (naming `where` and the point) unless p is a finite point of the open unit
-/// disk (decided exactly); for double coordinates well inside the disk one comparison decides
-/// (1 + |p|^2 < 2 - 1e-13 in floating point implies |p| < 1 and finite coordinates).
+/// the exact part of `check_point_in_disk()` (out of line: rarely reached with double coordinates)
 template <class Point_2>
-void check_point_in_disk(const Point_2& p, const char* where)
+#if defined(__GNUC__)
+__attribute__((noinline, cold))
+#endif
+void check_point_in_disk_exactly(const Point_2& p, const char* where)
 {
-  if constexpr(std::is_same<typename std::decay<decltype(p.x())>::type, double>::value) {
-    const double w = 1.0 + p.x() * p.x() + p.y() * p.y();
-    if(w < 1.9999999999999) return;
-  }
   if(!is_in_open_disk(p)) {
     std::ostringstream os;
     os.precision(17);
@@ -72,6 +69,20 @@ void check_point_in_disk(const Point_2& p, const char* where)
        << ") is not in the open unit disk (|p| < 1 and finite coordinates are required)";
     throw Poincare_disk_domain_error(os.str());
   }
+}
+
+/// throws `Poincare_disk_domain_error` (naming `where` and the point) unless p is a finite point of the open unit
+/// disk (decided exactly); for double coordinates well inside the disk one comparison decides
+/// (1 + |p|^2 < 2 - 1e-13 in floating point implies |p| < 1 and finite coordinates). That comparison is inlined
+/// into every predicate, the exact decision is not.
+template <class Point_2>
+inline void check_point_in_disk(const Point_2& p, const char* where)
+{
+  if constexpr(std::is_same<typename std::decay<decltype(p.x())>::type, double>::value) {
+    const double w = 1.0 + p.x() * p.x() + p.y() * p.y();
+    if(w < 1.9999999999999) return;
+  }
+  check_point_in_disk_exactly(p, where);
 }
 
 } // namespace Poincare_disk_internal
