@@ -131,7 +131,7 @@ CGAL_HC_TEST_CASE(one_vertex_triangulations_faces_using_a_vertex_three_times)
       loops.push_back(given.realize(w));
       loops.push_back(given.realize(SSW::Word(g == 2 ? 1200 : 200, 2 * g)));
     }
-    int checked = 0;
+    int checked = 0, fallbacks = 0;
     double longest = 0, worst = 0;
     for(const std::vector<H>& hs : loops) {
       const auto path = s.path_from_halfedges(hs);
@@ -146,7 +146,9 @@ CGAL_HC_TEST_CASE(one_vertex_triangulations_faces_using_a_vertex_three_times)
         // (geometry_status may say that the loop itself was traced: the computed system's generators are
         // long, and the trace of their product can end farther than 1e-9 from its aim)
         CGAL_HC_CHECK_MSG(r.used_geometry, hs.size() << " edges, length " << d_ref << ": " << r.geometry_status);
-        if(solver == &given) CGAL_HC_CHECK_MSG(r.geometry_status.empty(), hs.size() << " edges: " << r.geometry_status);
+        // (with the given generators the product's trace is mostly accepted; above 1e-9 (1 + length) from its
+        // aim it is straightened, or the loop itself traced: counted, and the length checked below either way)
+        if(solver == &given && !r.geometry_status.empty()) ++fallbacks;
         if(!r.used_geometry) continue;
         CGAL_HC_CHECK_MSG(std::abs(s.path_length(r.loop) - r.length) <= 1e-9 * (1 + r.length),
                           s.path_length(r.loop) << " vs " << r.length);
@@ -165,7 +167,8 @@ CGAL_HC_TEST_CASE(one_vertex_triangulations_faces_using_a_vertex_three_times)
     }
     CGAL_HC_CHECK(longest > (g == 2 ? 1e4 : 1e3));
     std::cout << "  genus " << g << ": " << checked << " loops, every word confirmed by CGAL, every shortest loop traced and equal to the "
-              << "holonomy's length (longest " << longest << ", largest relative difference " << worst << ")" << std::endl;
+              << "holonomy's length (longest " << longest << ", largest relative difference " << worst << "; "
+              << fallbacks << " products' traces of the given system straightened or replaced)" << std::endl;
   }
 }
 
@@ -180,7 +183,7 @@ CGAL_HC_TEST_CASE(computed_system_on_perturbed_one_vertex_surface_gives_shortest
   const int g = 3;
   const RPS P(g, 3);
   double worst = 0;
-  int solved = 0, straightened = 0;
+  int solved = 0, straightened = 0, bounded = 0;
   for(int t = 0; t < 10; ++t) {
     One_vertex_polygon O(P);
     std::mt19937 prng(1000 + unsigned(t));
@@ -207,20 +210,71 @@ CGAL_HC_TEST_CASE(computed_system_on_perturbed_one_vertex_surface_gives_shortest
         ++solved;
         if(r.geometry_status.find("was kept") != std::string::npos) ++straightened;
         const double err = std::abs(r.length - d_ref) / (1 + d_ref);
-        // (measured: 9.2e-7 at most, a loop whose product's trace fails and whose own trace is kept)
-        CGAL_HC_CHECK_MSG(err <= 2e-6, "perturbation " << t << ", " << len << " edges: " << r.length << " vs " << d_ref
+        // (measured: 5.5e-10 at most; 9.2e-7 before the end mismatch of a trace snapped to its end vertex was
+        // reported, 1.07e-5 before the product's trace was straightened)
+        CGAL_HC_CHECK_MSG(err <= 1e-8, "perturbation " << t << ", " << len << " edges: " << r.length << " vs " << d_ref
                                                        << " (" << r.geometry_status << ")");
         CGAL_HC_CHECK(std::abs(s.path_length(r.loop) - r.length) <= 1e-9 * (1 + r.length));
         worst = (std::max)(worst, err);
+        // the a-posteriori bound the solver relies on: a traced loop is within its end mismatch of the length
+        // it reports (violated by 39 of these 300 loops before the trace reported the mismatch of an end
+        // snapped to the end vertex: a trace 4e-6 off its aim circled the vertex and reported 0)
+        const auto sl = computed.shortest_loop_of_word(r.word);
+        ++bounded;
+        CGAL_HC_CHECK_MSG(std::abs(sl.length - d_ref) <= sl.end_mismatch + 1e-12 * (1 + d_ref),
+                          "perturbation " << t << ", " << len << " edges: " << sl.length << " vs " << d_ref
+                                          << ", end mismatch " << sl.end_mismatch);
       }
   }
-  CGAL_HC_CHECK(solved == 300 && straightened > 0);
+  CGAL_HC_CHECK(solved == 300 && straightened > 0 && bounded == 300);
   std::cout << "  " << solved << " loops on 10 perturbed surfaces, " << straightened
             << " products' traces straightened, largest relative length difference " << worst << std::endl;
 }
 
 // the named parameters (issue 8 item 4): each one has the effect of the struct field it replaces, and the
 // ranges are checked
+// shortest_homotopic_path() by chart chaining on long random loops of the genus-3 one-vertex surface (every
+// face contains the end vertex): a trace that found no exit edge was taken to have arrived and finished at a
+// corner 7 units from its aim, in another homotopy class; the pieces kept it (3349.97 instead of 3358.41 for
+// the first 1000-edge loop, 10190.62 instead of 10201.00 for the first 3000-edge loop, vertex_snap <= 1e-9).
+// Every result must be in the class (its own word the element's) with the holonomy's length.
+CGAL_HC_TEST_CASE(chained_shortest_paths_stay_in_the_homotopy_class)
+{
+  const int g = 3;
+  const RPS P(g, 3);
+  One_vertex_polygon O(P);
+  const Mesh& m = O.mesh;
+  const Surface s(m, O.length);
+  const Solver given(s, O.base, O.generators);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(m);
+  std::mt19937 rng(40 + g); // the loops of one_vertex_triangulations_faces_using_a_vertex_three_times
+  std::vector<H> all(halfedges(m).begin(), halfedges(m).end());
+  int checked = 0;
+  double worst = 0;
+  for(std::size_t len : {1, 2, 3, 5, 8, 13, 30, 100, 300, 1000, 3000})
+    for(int trial = 0; trial < 6; ++trial) {
+      std::vector<H> hs;
+      for(std::size_t k = 0; k < len; ++k) hs.push_back(all[rng() % all.size()]);
+      if(len < 1000 || trial > 1) continue;
+      const auto path = s.path_from_halfedges(hs);
+      const SSW::Word wg = given.word(path);
+      const double d_ref = ssw_test::based_length_q(g, wg);
+      for(double snap : {1e-9, 0.0})
+        for(double reach : {25.0, 20.0, 15.0}) {
+          const auto r = SSW::shortest_homotopic_path(s, path, SSW::parameters::vertex_snap(snap, SSW::parameters::max_lift_distance(reach)));
+          const SSW::Word wl = given.word(r.path);
+          CGAL_HC_CHECK_MSG(wl.size() == wg.size() && (wl == wg || cst.are_base_point_homotopic(pos(m, given.realize(wl)), pos(m, given.realize(wg)))),
+                            len << " edges, snap " << snap << ", reach " << reach << ": word of " << wl.size() << " letters, not " << wg.size());
+          const double err = std::abs(r.length - d_ref) / (1 + d_ref);
+          CGAL_HC_CHECK_MSG(err <= 1e-8, len << " edges, snap " << snap << ", reach " << reach << ": " << r.length << " vs " << d_ref);
+          worst = (std::max)(worst, err);
+          ++checked;
+        }
+    }
+  CGAL_HC_CHECK(checked == 24);
+  std::cout << "  " << checked << " chained shortest paths in the class, largest relative length difference " << worst << std::endl;
+}
+
 CGAL_HC_TEST_CASE(named_parameters_are_read_and_checked)
 {
   const RPS S(2, 4);

@@ -274,6 +274,7 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
   res.path.push_back(start.on_vertex && surface.needs_corners() ? surface.corner(first.in) : start);
   if(res.lift_distance < 1e-12) {
     if(!surface.same_point(start, end) || (end.on_vertex && end.h != res.path[0].h)) res.path.push_back(end);
+    res.end_mismatch = res.lift_distance;
     res.embedded_faces = lifted;
     return res;
   }
@@ -324,6 +325,11 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
     }
     const double kT = std::abs(internal::to_klein(T));
     const bool end_here = surface.in_face(end.on_vertex ? Point::vertex(end.v) : end, tr.current_face());
+    // no exit found (the ray leaves through a vertex, up to rounding): the trace may finish here only if T
+    // lies in the face. (On a one-vertex surface every face contains the end vertex: a lost trace finished
+    // at a corner 7 units from T, in another homotopy class.)
+    const bool lost = best_i < 0 && !internal::in_klein_triangle(k, internal::to_klein(T), 1e-9);
+    if(lost) throw Precision_error("Surface_shortest_words: lost the geodesic while tracing");
     if(best_i < 0 || kT <= best_s * (1 + 1e-12) + 1e-15) {
       if(!end_here) {
         if(best_i < 0) throw Precision_error("Surface_shortest_words: lost the geodesic while tracing");
@@ -362,6 +368,10 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
       T = internal::apply_isometry(m, T);
       if(end.on_vertex && end.v == target(corner, tm) && internal::distance_to_origin(T) < ((at_end_a || at_end_b) ? 1e-6 : 1e-7)) {
         if(surface.needs_corners() && end.has_corner() && end.h != corner) res.path.push_back(end);
+        // ended at the vertex, up to 1e-6 from the aim: that distance is the end mismatch (it was left at 0
+        // here, so that a trace that missed its aim by 4e-6 and circled the end vertex in steps of 1e-6 was
+        // accepted, 4.6e-7 too long, on a genus-3 one-vertex surface with edge lengths moved by one ulp)
+        res.end_mismatch = internal::distance_to_origin(T);
         break;
       }
       corner = internal::rotate_to_direction(surface, tr, corner, T / std::abs(T));
@@ -428,6 +438,13 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
       }
       r = trace_geodesic(surface, p.front(), st.front(), T, p.back(), options, 0);
     } catch(const Precision_error& e) { faces += lifted; error = e.what(); return false; }
+    // a piece is within one chart: its trace ends within about 1e-14 e^25 of its aim; farther means it
+    // ended at another lift of its end point (another homotopy class)
+    if(!(r.end_mismatch <= 1e-3)) {
+      faces += r.embedded_faces;
+      error = "Surface_shortest_words: traced geodesic misses the end point";
+      return false;
+    }
     faces += r.embedded_faces;
     return true;
   };
@@ -497,7 +514,9 @@ shortest_path_chained(const Surface& surface, const typename Surface::Path& path
   geodesic in the homotopy class (the metric has no cone points).
 
   Double precision keeps a lifted point accurate to about 1e-16 e^d at distance d, so one chart serves
-  only while the lifted path stays within `options.max_lift_distance` of its start. Longer paths (any
+  only while the lifted path stays within `options.max_lift_distance` of its start, and its result is kept
+  only if its trace ends within 1e-9 (1 + length) of the lifted end point (`end_mismatch`); otherwise chart
+  chaining (below) is run too and the result with the smaller length + end mismatch is kept. Longer paths (any
   length) are lifted by chart chaining, without iteration: the path is cut into chunks (their length adapted
   so that each lifts to about one chart's reach), each shortened in one chart and merged on a stack with the
   previous geodesic piece while the merged geodesic is shorter than 0.4 max_lift_distance (removing
@@ -526,11 +545,25 @@ shortest_homotopic_path(const Surface& surface, const typename Surface::Path& pa
                         const Shortest_path_options& options = Shortest_path_options())
 {
   check_options(options);
+  Shortest_path_result<typename Surface::Triangle_mesh> one;
   try {
-    return internal::shortest_path_one_chart(surface, path, options);
+    one = internal::shortest_path_one_chart(surface, path, options);
+  } catch(const Precision_error&) {
+    // too long for one chart: chart chaining
+    return internal::shortest_path_chained(surface, path, options);
+  }
+  // A lift far from the start carries rounding errors of about 1e-16 e^d, more where the lifted path winds
+  // around vertices: on the one-vertex genus-3 surface a 3-edge loop lifted to 19.2 units was traced 5e-5 too
+  // long (end mismatch 6.6e-5), chart chaining gave it to 1e-12 (mismatch 1.8e-8). Above 1e-9 (1 + length)
+  // chaining is tried too, and the result with the smaller length + end mismatch (an upper bound on the
+  // shortest length) is kept.
+  if(one.end_mismatch <= 1e-9 * (1 + one.length)) return one;
+  try {
+    Shortest_path_result<typename Surface::Triangle_mesh> ch = internal::shortest_path_chained(surface, path, options);
+    ch.embedded_faces += one.embedded_faces;
+    if(ch.length + ch.end_mismatch < one.length + one.end_mismatch) return ch;
   } catch(const Precision_error&) {}
-  // too long for one chart: chart chaining
-  return internal::shortest_path_chained(surface, path, options);
+  return one;
 }
 
 /// \ingroup PkgSurfaceShortestWordsRef

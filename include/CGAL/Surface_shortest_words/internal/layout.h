@@ -68,6 +68,20 @@ inline Cplx from_klein(const Cplx& k) { return to_cplx(Disk::from_klein(to_point
 
 inline double cross(const Cplx& u, const Cplx& v) { return u.real() * v.imag() - u.imag() * v.real(); }
 
+/// true if the Klein point k lies in the triangle K[0], K[1], K[2] (either orientation) or within the
+/// Euclidean distance `tol` of it in the Klein model
+inline bool in_klein_triangle(const Cplx K[3], const Cplx& k, double tol)
+{
+  const double sign = cross(K[1] - K[0], K[2] - K[0]) >= 0 ? 1.0 : -1.0;
+  for(int i = 0; i < 3; ++i) {
+    const Cplx e = K[(i + 1) % 3] - K[i];
+    const double n = std::abs(e);
+    if(!(n > 0)) continue;
+    if(sign * cross(e, k - K[i]) / n < -tol) return false;
+  }
+  return true;
+}
+
 } // namespace internal
 } // namespace Surface_shortest_words
 } // namespace CGAL
