@@ -29,8 +29,11 @@ struct Setup
   RPS S;
   Surface s;
   Solver given, computed;
+  Solver plain; // the given system without geometry: reads the word of a traced loop
   CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst;
-  explicit Setup(int g) : S(g, 3), s(S.mesh, S.length), given(s, S.base, S.generators), computed(s, S.base), cst(S.mesh) {}
+  explicit Setup(int g)
+    : S(g, 3), s(S.mesh, S.length), given(s, S.base, S.generators), computed(s, S.base),
+      plain(s, S.base, S.generators, SSW::parameters::use_geometry(false)), cst(S.mesh) {}
 };
 
 Setup& setup(int g)
@@ -91,5 +94,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool ok = res.word.empty() ? st.cst.is_contractible(pos(m, hs))
                                    : st.cst.are_base_point_homotopic(pos(m, hs), pos(m, solver.realize(res.word)));
   if(!ok || solver.reduce(res.word) != res.word) std::abort();
+  // the traced shortest loop is in the class (a trace that ends at another lift of p changes it): its word in
+  // the given system is the element of the input loop's word there
+  if(res.used_geometry) {
+    const std::vector<int> wl = st.plain.word(res.loop), wi = st.plain.word(st.s.path_from_halfedges(hs));
+    std::vector<int> c = wl;
+    W::append_reduced(c, W::inverse(wi));
+    if(!W::dehn_reduce(c, st.plain.relator()).empty()) std::abort();
+    // and it is not longer than the input loop
+    if(!(res.length <= st.s.path_length(st.s.path_from_halfedges(hs)) * (1 + 1e-9) + 1e-9)) std::abort();
+  }
   return 0;
 }
