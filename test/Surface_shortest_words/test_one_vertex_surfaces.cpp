@@ -9,6 +9,7 @@
 
 #include "cgal_hc_test.h"
 #include "fuchsian_reference.h"
+#include "one_vertex_polygon.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,7 @@
 namespace {
 
 namespace SSW = CGAL::Surface_shortest_words;
+namespace W = CGAL::Hyperbolic_surface_2::internal;
 typedef SSW::Regular_polygon_surface RPS;
 typedef RPS::Mesh Mesh;
 typedef Mesh::Halfedge_index H;
@@ -26,49 +28,7 @@ typedef SSW::Hyperbolic_surface<Mesh, Length_map> Surface;
 typedef SSW::Shortest_word_solver<Mesh, Length_map> Solver;
 typedef CGAL::Surface_mesh_topology::Path_on_surface<Mesh> Path_on_surface;
 
-// the one-vertex triangulation of the regular 4g-gon of `P` (triangles (V_0, V_k, V_k+1)), built with
-// Surface_mesh's low-level functions (add_face(u, v, w) refuses faces using a vertex twice)
-struct One_vertex_polygon
-{
-  Mesh mesh;
-  Length_map length;
-  Mesh::Vertex_index base;
-  std::vector<std::vector<H> > generators; // a1, b1, ...: the sides s_{4i-3}, s_{4i-2} (counterclockwise)
-
-  explicit One_vertex_polygon(const RPS& P)
-  {
-    const int n = 4 * P.genus();
-    length = mesh.add_property_map<RPS::Edge_index, double>("e:hyperbolic_length", 0.0).first;
-    base = mesh.add_vertex(RPS::Point_3(0, 0, 0));
-    std::map<std::pair<int, int>, H> seg; // directed polygon segment (i, j) -> halfedge (interior side)
-    auto set_len = [&](H h, int i, int j) {
-      length[mesh.edge(h)] = SSW::internal::hyperbolic_distance(P.polygon[std::size_t(i)], P.polygon[std::size_t(j)]);
-    };
-    for(int k = 2; k <= n - 2; ++k) { // diagonals
-      const H h = mesh.add_edge();
-      seg[{0, k}] = h; seg[{k, 0}] = mesh.opposite(h); set_len(h, 0, k);
-    }
-    for(int q = 1; q <= n; ++q) { // sides, glued to their partners with the opposite orientation
-      const int j = P.partner(q);
-      if(j < q) continue;
-      const H h = mesh.add_edge();
-      seg[{q - 1, q % n}] = h; seg[{j - 1, j % n}] = mesh.opposite(h); set_len(h, q - 1, q % n);
-    }
-    for(int k = 1; k <= n - 2; ++k) {
-      const H s[3] = {seg.at({0, k}), seg.at({k, k + 1}), seg.at({k + 1, 0})};
-      const Mesh::Face_index f = mesh.add_face();
-      for(int i = 0; i < 3; ++i) {
-        mesh.set_next(s[i], s[(i + 1) % 3]);
-        mesh.set_face(s[i], f);
-        mesh.set_target(s[i], base);
-      }
-      mesh.set_halfedge(f, s[0]);
-    }
-    mesh.set_halfedge(base, seg.at({0, 1}));
-    for(int i = 1; i <= P.genus(); ++i)
-      for(int q : {4 * i - 3, 4 * i - 2}) generators.push_back(std::vector<H>(1, seg.at({q - 1, q})));
-  }
-};
+using ssw_test::One_vertex_polygon;
 
 Path_on_surface pos(const Mesh& m, const std::vector<H>& hs)
 {
@@ -273,6 +233,47 @@ CGAL_HC_TEST_CASE(chained_shortest_paths_stay_in_the_homotopy_class)
     }
   CGAL_HC_CHECK(checked == 24);
   std::cout << "  " << checked << " chained shortest paths in the class, largest relative length difference " << worst << std::endl;
+}
+
+// Found by fuzz_words (test/fuzz/corpus/words/one_vertex_product_trace_other_lift_*): on the genus-3 one-vertex
+// surface with the computed system, the deck product's trace of these loops ended 3.98 and 5.27 from its aim,
+// i.e. at another lift of p; it (or its straightening, which keeps the class of what it straightens) was kept
+// as the shortest loop, in another homotopy class. Now a candidate ending farther than 1e-3 from its aim is
+// discarded: the result is either a loop of the class or no geometry (used_geometry false, with the reason).
+CGAL_HC_TEST_CASE(traces_ending_at_another_lift_are_not_kept)
+{
+  const int g = 3;
+  const RPS P(g, 3);
+  One_vertex_polygon O(P);
+  const Mesh& m = O.mesh;
+  const Surface s(m, O.length);
+  const Solver given(s, O.base, O.generators, SSW::parameters::use_geometry(false));
+  const Solver computed(s, O.base);
+  CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(m);
+  // the fuzz inputs' walks (byte i >= 1: the outgoing halfedge data[i] % degree around the vertex)
+  const std::vector<std::vector<unsigned char> > inputs = {
+    {0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0x01, 0x00, 0x00, 0x85, 0xab, 0xab, 0xab, 0xab, 0xd4, 0x00,
+     0xab, 0xab, 0xab, 0xa7, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xb2, 0xab},
+    {0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab, 0xab,
+     0xab, 0xab, 0x26, 0xab, 0x3d, 0xab, 0xab, 0xab, 0xab}};
+  std::vector<H> out;
+  for(H h : CGAL::halfedges_around_source(O.base, m)) out.push_back(h);
+  for(const auto& bytes : inputs) {
+    std::vector<H> hs;
+    for(unsigned char b : bytes) hs.push_back(out[b % out.size()]);
+    const auto path = s.path_from_halfedges(hs);
+    const auto r = computed.solve(path);
+    CGAL_HC_CHECK(cst.are_base_point_homotopic(pos(m, hs), pos(m, computed.realize(r.word))));
+    if(r.used_geometry) { // the traced loop is in the class
+      SSW::Word c = given.word(r.loop);
+      W::append_reduced(c, W::inverse(given.word(path)));
+      CGAL_HC_CHECK_MSG(W::dehn_reduce(c, given.relator()).empty(), r.geometry_status);
+    } else {
+      CGAL_HC_CHECK(!r.geometry_status.empty());
+    }
+    std::cout << "  " << hs.size() << "-edge loop, word of " << r.word.size() << " letters: "
+              << (r.used_geometry ? "shortest loop traced" : "no geometry") << " (" << r.geometry_status << ")" << std::endl;
+  }
 }
 
 CGAL_HC_TEST_CASE(named_parameters_are_read_and_checked)

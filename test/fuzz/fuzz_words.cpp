@@ -2,11 +2,14 @@
 // geodesic reduction, checked with Dehn's algorithm (same element) and idempotence (the result is accepted).
 // Build: clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Iinclude test/fuzz/fuzz_words.cpp -lgmp -lmpfr
 // Run:   ./a.out test/fuzz/corpus/words -max_total_time=60
-// Input: byte 0 selects the genus (2 or 3) and the system (given / computed canonical); the other bytes are
+// Input: byte 0 selects the genus (bit 0: 2 or 3), the system (bit 1: given / computed canonical) and the surface
+// (bit 2: the regular polygon surface / the one-vertex polygon, every face using its vertex three times); the other bytes are
 // the steps of a walk from the base vertex (outgoing halfedge index), closed by a shortest edge path.
 #include <CGAL/Surface_shortest_words.h>
 #include <CGAL/Surface_shortest_words/regular_polygon_surface.h>
 #include <CGAL/Curves_on_surface_topology.h>
+
+#include "../Surface_shortest_words/one_vertex_polygon.h"
 
 #include <cstdint>
 #include <cstdlib>
@@ -24,23 +27,30 @@ namespace W = CGAL::Hyperbolic_surface_2::internal;
 
 namespace {
 
+// the surface: the regular 4g-gon surface of Regular_polygon_surface, or (one_vertex) its polygon with all
+// corners identified (one vertex, every face using it three times; ../Surface_shortest_words/one_vertex_polygon.h)
 struct Setup
 {
   RPS S;
+  std::unique_ptr<ssw_test::One_vertex_polygon> O;
+  const Mesh& mesh;
+  Mesh::Vertex_index base;
   Surface s;
   Solver given, computed;
   Solver plain; // the given system without geometry: reads the word of a traced loop
   CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst;
-  explicit Setup(int g)
-    : S(g, 3), s(S.mesh, S.length), given(s, S.base, S.generators), computed(s, S.base),
-      plain(s, S.base, S.generators, SSW::parameters::use_geometry(false)), cst(S.mesh) {}
+  Setup(int g, bool one_vertex)
+    : S(g, 3), O(one_vertex ? new ssw_test::One_vertex_polygon(S) : nullptr), mesh(O ? O->mesh : S.mesh),
+      base(O ? O->base : S.base), s(mesh, O ? O->length : S.length),
+      given(s, base, O ? O->generators : S.generators), computed(s, base),
+      plain(s, base, O ? O->generators : S.generators, SSW::parameters::use_geometry(false)), cst(mesh) {}
 };
 
-Setup& setup(int g)
+Setup& setup(int g, bool one_vertex)
 {
-  static std::map<int, std::unique_ptr<Setup> > m;
-  auto& p = m[g];
-  if(!p) p.reset(new Setup(g));
+  static std::map<std::pair<int, bool>, std::unique_ptr<Setup> > m;
+  auto& p = m[std::make_pair(g, one_vertex)];
+  if(!p) p.reset(new Setup(g, one_vertex));
   return *p;
 }
 
@@ -57,9 +67,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   if(size < 1 || size > 4096) return 0;
   const int g = 2 + (data[0] & 1);
-  Setup& st = setup(g);
+  Setup& st = setup(g, (data[0] & 4) != 0);
   const Solver& solver = (data[0] & 2) ? st.computed : st.given;
-  const Mesh& m = st.S.mesh;
+  const Mesh& m = st.mesh;
   // the word algebra on the raw bytes
   {
     std::vector<int> w;
@@ -71,7 +81,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   // a loop on the mesh
   std::vector<Mesh::Halfedge_index> hs;
-  Mesh::Vertex_index v = st.S.base;
+  Mesh::Vertex_index v = st.base;
   for(std::size_t i = 1; i < size; ++i) {
     std::vector<Mesh::Halfedge_index> out;
     for(auto h : CGAL::halfedges_around_source(v, m)) out.push_back(h);
@@ -80,14 +90,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     v = m.target(h);
   }
   std::map<Mesh::Vertex_index, Mesh::Halfedge_index> parent;
-  std::queue<Mesh::Vertex_index> q; q.push(st.S.base); parent[st.S.base] = Mesh::null_halfedge();
+  std::queue<Mesh::Vertex_index> q; q.push(st.base); parent[st.base] = Mesh::null_halfedge();
   while(!q.empty()) {
     const auto u = q.front(); q.pop();
     for(auto h : CGAL::halfedges_around_source(u, m))
       if(!parent.count(m.target(h))) { parent[m.target(h)] = h; q.push(m.target(h)); }
   }
   std::vector<Mesh::Halfedge_index> back;
-  while(v != st.S.base) { const auto h = parent.at(v); back.push_back(m.opposite(h)); v = m.source(h); }
+  while(v != st.base) { const auto h = parent.at(v); back.push_back(m.opposite(h)); v = m.source(h); }
   hs.insert(hs.end(), back.begin(), back.end());
   if(hs.empty()) return 0;
   const auto res = solver.solve(st.s.path_from_halfedges(hs));

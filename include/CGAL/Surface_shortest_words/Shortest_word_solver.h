@@ -481,6 +481,11 @@ private:
         if(best.end_mismatch <= mismatch_tolerance(best.length)) return best;
         std::ostringstream os;
         os << "product of the deck transformations: trace ends " << best.end_mismatch << " from its aim; ";
+        // farther than 1e-3: it ended at another lift of p (lifts of p are a closed geodesic apart), so the
+        // traced loop is in another class and neither it nor its straightening is a candidate (fuzz_words,
+        // one-vertex genus-3 surface: a product's trace ended 5.27 from its aim, its straightening 1.6e-5 from
+        // its own aim, in the wrong class, and was kept)
+        if(!(best.end_mismatch <= 1e-3)) { have = false; os << "another lift of p, discarded; "; }
         why = os.str();
       } catch(const Precision_error& e) {
         why = std::string("product of the deck transformations: ") + e.what() + "; ";
@@ -509,6 +514,15 @@ private:
     } catch(const Precision_error& e) {
       if(!have) throw Precision_error(why + "the loop: " + e.what());
       why += std::string("the loop: ") + e.what() + "; the product's trace kept";
+    }
+    // a candidate ending farther than 1e-3 from its aim ended at another lift of p (lifts of p are a closed
+    // geodesic apart): another homotopy class, not a loop of the element (found by fuzz_words on the one-vertex
+    // genus-3 surface: a product's trace and its straightening ended 3.98 from their aim, one side of the
+    // polygon, and were kept as the shortest loop)
+    if(!(best.end_mismatch <= 1e-3)) {
+      std::ostringstream os;
+      os << why << "; no candidate ends within 1e-3 of its aim (best: " << best.end_mismatch << ")";
+      throw Precision_error(os.str());
     }
     if(!deck_.empty()) status = why;
     return best;
