@@ -191,8 +191,6 @@ CGAL_HC_TEST_CASE(computed_system_on_perturbed_one_vertex_surface_gives_shortest
             << " products' traces straightened, largest relative length difference " << worst << std::endl;
 }
 
-// the named parameters (issue 8 item 4): each one has the effect of the struct field it replaces, and the
-// ranges are checked
 // shortest_homotopic_path() by chart chaining on long random loops of the genus-3 one-vertex surface (every
 // face contains the end vertex): a trace that found no exit edge was taken to have arrived and finished at a
 // corner 7 units from its aim, in another homotopy class; the pieces kept it (3349.97 instead of 3358.41 for
@@ -276,6 +274,8 @@ CGAL_HC_TEST_CASE(traces_ending_at_another_lift_are_not_kept)
   }
 }
 
+// the named parameters (issue 8 item 4): each one has the effect of the struct field it replaces, and the
+// ranges are checked
 CGAL_HC_TEST_CASE(named_parameters_are_read_and_checked)
 {
   const RPS S(2, 4);

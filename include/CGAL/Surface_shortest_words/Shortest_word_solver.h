@@ -485,7 +485,7 @@ private:
         // traced loop is in another class and neither it nor its straightening is a candidate (fuzz_words,
         // one-vertex genus-3 surface: a product's trace ended 5.27 from its aim, its straightening 1.6e-5 from
         // its own aim, in the wrong class, and was kept)
-        if(!(best.end_mismatch <= 1e-3)) { have = false; os << "another lift of p, discarded; "; }
+        if(!(best.end_mismatch <= internal::other_lift_mismatch)) { have = false; os << "another lift of p, discarded; "; }
         why = os.str();
       } catch(const Precision_error& e) {
         why = std::string("product of the deck transformations: ") + e.what() + "; ";
@@ -519,7 +519,7 @@ private:
     // geodesic apart): another homotopy class, not a loop of the element (found by fuzz_words on the one-vertex
     // genus-3 surface: a product's trace and its straightening ended 3.98 from their aim, one side of the
     // polygon, and were kept as the shortest loop)
-    if(!(best.end_mismatch <= 1e-3)) {
+    if(!(best.end_mismatch <= internal::other_lift_mismatch)) {
       std::ostringstream os;
       os << why << "; no candidate ends within 1e-3 of its aim (best: " << best.end_mismatch << ")";
       throw Precision_error(os.str());

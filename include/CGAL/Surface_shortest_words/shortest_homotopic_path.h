@@ -253,6 +253,10 @@ Cplx finish_at_end(const Surface& s, const Chart& tr, const Cplx& T, const typen
 // Algorithm 2, steps 4-7: the geodesic from `start` (a point of the face `first.face`, at the corner
 // `first.in` if it is a vertex) to `end`, whose lift is T in the layer's chart of `first.face` recentred at
 // `start`, traced one face at a time; `lifted` (faces embedded before) is added to `embedded_faces`.
+// A trace that ends farther than this from its aim ended at another lift of its end point (lifts of a point
+// are a closed geodesic apart), i.e. in another homotopy class: such a result is refused, never kept.
+constexpr double other_lift_mismatch = 1e-3;
+
 template <class Surface>
 Shortest_path_result<typename Surface::Triangle_mesh>
 trace_geodesic(const Surface& surface, const typename Surface::Point& start, const typename Surface::Step& first,
@@ -440,7 +444,7 @@ geodesic_pieces(const Surface& surface, const typename Surface::Path& path, cons
     } catch(const Precision_error& e) { faces += lifted; error = e.what(); return false; }
     // a piece is within one chart: its trace ends within about 1e-14 e^25 of its aim; farther means it
     // ended at another lift of its end point (another homotopy class)
-    if(!(r.end_mismatch <= 1e-3)) {
+    if(!(r.end_mismatch <= other_lift_mismatch)) {
       faces += r.embedded_faces;
       error = "Surface_shortest_words: traced geodesic misses the end point";
       return false;
