@@ -39,16 +39,35 @@ struct Cover_frame
   typename Surface::Step step; // step.face: the face; step.in: the corner of q (vertex points)
 };
 
-// A point of the geodesic gamma where it crosses an edge, in a frame of the universal cover (a lift of the
-// base chart: the base face laid out as in the layer's chart recentred at the base corner).
+// A point of the geodesic gamma where it crosses an edge, or a mesh vertex that gamma passes within
+// `kink`, in a frame of the universal cover (a lift of the base chart: the base face laid out as in the
+// layer's chart recentred at the base corner).
 template <class Surface>
 struct Geodesic_anchor
 {
-  typename Surface::Point q;   // the surface point (an edge point)
+  typename Surface::Point q;   // the surface point (an edge point, or a vertex point)
   typename Surface::Step first; // its face (the face gamma is read in) for trace_geodesic
   Isometry to_start;           // frame coordinates -> coordinates of trace_geodesic's start chart at q
   Cplx Q;                      // q in frame coordinates
+  double kink = 0;             // a vertex anchor: bound on its distance to gamma (0 for an edge point)
 };
+
+// An edge crossing of gamma closer to a vertex than this fraction of the edge is no safe anchor (the
+// trace that ends there must find it on the right side of the vertex): the anchor is the vertex itself.
+// (Closer than 1e-6 was walked along gamma to the next safe crossing: a based geodesic of a power of a loop
+// through the vertex passes every lift of that vertex within 1e-9 to 1e-5, so no crossing was safe, the
+// anchors were skipped and the pieces grew to 20 and 33 units, beyond double precision: the one-vertex
+// genus-3 fuzz inputs of issue 10; an anchor 2e-6 from a vertex was found on the wrong side of it.)
+constexpr double anchor_vertex_snap = 1e-5;
+
+// Upper bound on the length a traced piece of length `l` gains at an end that is a vertex anchor `kink`
+// away from gamma instead of a point of gamma: r^2 coth(l) / 2 to second order (twice that here), and at
+// most r (triangle inequality).
+inline double kink_excess(double r, double l)
+{
+  if(r == 0) return 0;
+  return (std::min)(r, r * r / std::tanh((std::max)(l, 1e-300)));
+}
 
 // Where the line o + l d (Klein model) leaves the triangle K: the largest l over the edges i that the line
 // meets within [-tol, 1 + tol] of their own parameter; `edge` receives i, -1 if no edge is met.
@@ -69,9 +88,9 @@ inline double klein_exit(const Cplx K[3], Cplx o, Cplx d, double tol, int& edge)
 
 // Locates the geodesic gamma through the points A and B of the closed disk (frame coordinates; either may be
 // ideal) near the origin of the frame: walks from the base face to the face containing the foot of the
-// perpendicular from the origin to gamma, then takes the point where gamma leaves that face towards B (a
-// vertex if that point is within `vertex_snap` of one; the next exit along gamma if it is within 1e-6 of a
-// vertex but farther than `vertex_snap`). Returns false (no anchor) if a walk exceeds its step bound.
+// perpendicular from the origin to gamma, then takes the point where gamma leaves that face towards B, or
+// the vertex of that edge if the point is within `anchor_vertex_snap` (relative) of it (or within
+// `vertex_snap`, if larger). Returns false (no anchor) if the walk exceeds its step bound.
 template <class Surface>
 bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cplx A, Cplx B, double vertex_snap,
                         Geodesic_anchor<Surface>& out)
@@ -117,41 +136,33 @@ bool anchor_on_geodesic(const Surface& s, const Cover_frame<Surface>& frame, Cpl
     if(best_s >= 1 - 1e-9) break;
     step_across(best_i);
   }
-  // where gamma leaves the face towards B. An exit within 1e-6 of a vertex but farther than `vertex_snap` is
-  // no safe start for a trace: gamma is followed into the next faces until it leaves one at a safe point (a
-  // geodesic passing a vertex that closely, e.g. a long based geodesic converging to an axis through mesh
-  // vertices, leaves the vertex's star within a few faces)
-  Cplx zx;
-  double t = 0;
+  // where gamma leaves the face towards B
+  kA = to_klein(A); kB = to_klein(B);
+  const Cplx D = kB - kA;
+  Cplx K[3];
+  for(int i = 0; i < 3; ++i) K[i] = to_klein(tr.z()[i]);
   int best_i = -1;
-  for(std::size_t step = 0;; ++step) {
-    if(step > 1000) return false;
-    kA = to_klein(A); kB = to_klein(B);
-    const Cplx D = kB - kA;
-    Cplx K[3];
-    for(int i = 0; i < 3; ++i) K[i] = to_klein(tr.z()[i]);
-    const double best_l = klein_exit(K, kA, D, 1e-12, best_i);
-    if(best_i < 0) return false;
-    zx = from_klein(kA + best_l * D);
-    const Cplx za = tr.z()[best_i], zb = tr.z()[(best_i + 1) % 3];
-    const double da = hyperbolic_distance(za, zx), db = hyperbolic_distance(zx, zb);
-    t = da / (da + db);
-    if((t > 1e-6 && t < 1 - 1e-6) || t <= vertex_snap || t >= 1 - vertex_snap) break;
-    step_across(best_i);
-  }
+  const double best_l = klein_exit(K, kA, D, 1e-12, best_i);
+  if(best_i < 0) return false;
+  Cplx zx = from_klein(kA + best_l * D);
+  const Cplx za = tr.z()[best_i], zb = tr.z()[(best_i + 1) % 3];
+  const double da = hyperbolic_distance(za, zx), db = hyperbolic_distance(zx, zb);
+  const double t = da / (da + db), snap = (std::max)(anchor_vertex_snap, vertex_snap);
   const halfedge_descriptor h = tr.halfedge_at(best_i);
   out.first = typename Surface::Step();
   out.first.face = tr.current_face();
   halfedge_descriptor corner = halfedge_descriptor();
-  if(t > 1e-6 && t < 1 - 1e-6) {
+  if(t > snap && t < 1 - snap) {
     out.q = Point::on_edge(h, t);
+    out.kink = 0;
   } else {
-    // gamma passes through a vertex (within the trace's own vertex snap; e.g. a geodesic along mesh edges on
-    // a symmetric mesh): anchored at the vertex, at its corner in the current face
-    const int iv = t <= vertex_snap ? best_i : (best_i + 1) % 3; // z[iv] = source(halfedge_at(iv))
-    corner = tr.halfedge_at((iv + 2) % 3);                        // target = that vertex
+    // gamma passes that close to a vertex (e.g. a geodesic along mesh edges on a symmetric mesh, or
+    // converging to an axis through mesh vertices): anchored at the vertex, at its corner in the current face
+    const int iv = t < 0.5 ? best_i : (best_i + 1) % 3; // z[iv] = source(halfedge_at(iv))
+    corner = tr.halfedge_at((iv + 2) % 3);             // target = that vertex
     out.q = s.needs_corners() ? s.corner(corner) : Point::vertex(target(corner, s.mesh()));
     out.first.in = out.first.out = corner;
+    out.kink = t < 0.5 ? da : db;
     zx = tr.z()[iv];
   }
   // frame -> current chart -> the layer's chart of the face -> recentred at q (trace_geodesic's start chart)
@@ -196,19 +207,20 @@ geodesic_of_frames(const Surface& s, const std::vector<Cover_frame<Surface> >& f
   Isometry since; // D_{prev_k + 1} ... D_k: frame k -> frame prev_k
   Shortest_path_result<typename Surface::Triangle_mesh> res;
   Path& cur = res.path;
-  auto trace_to = [&](const Cplx& X, const typename Surface::Point& end) {
+  // (the end mismatch of the result also bounds what its vertex anchors add to its length: kink_excess())
+  auto trace_to = [&](const Cplx& X, const typename Surface::Point& end, double end_kink) {
     const Cplx T = apply_isometry(prev.to_start, X); // (identity at the start: frame 0 is the start chart)
     const Shortest_path_result<typename Surface::Triangle_mesh> piece = trace_geodesic(s, prev.q, prev.first, T, end, o, 0);
     if(cur.empty()) cur = piece.path;
     else { cur.back() = piece.path.front(); cur.insert(cur.end(), piece.path.begin() + 1, piece.path.end()); }
     res.length += piece.length;
-    res.end_mismatch += piece.end_mismatch;
+    res.end_mismatch += piece.end_mismatch + kink_excess(prev.kink, piece.length) + kink_excess(end_kink, piece.length);
     res.embedded_faces += piece.embedded_faces;
     if(o.progress) o.progress(res.embedded_faces);
   };
   for(std::size_t k = 1; k <= n; ++k) {
     since = (since * D[k - 1]).normalized();
-    if(k == n) { trace_to(apply_isometry(since, Cplx(0, 0)), frames[n].q); break; }
+    if(k == n) { trace_to(apply_isometry(since, Cplx(0, 0)), frames[n].q, 0.0); break; }
     Geodesic_anchor<Surface> a;
     if(!anchor_on_geodesic(s, frames[k], A[k], B[k], o.vertex_snap, a)) continue;
     // in the frame of the previous anchor: ahead of it along gamma (towards B), within one chart
@@ -216,7 +228,7 @@ geodesic_of_frames(const Surface& s, const std::vector<Cover_frame<Surface> >& f
     const double lx = chord_parameter(to_klein(A[prev_k]), to_klein(B[prev_k]), to_klein(X));
     const double lp = chord_parameter(to_klein(A[prev_k]), to_klein(B[prev_k]), to_klein(prev.Q));
     if(!(lx > lp) || hyperbolic_distance(prev.Q, X) < 0.5) continue;
-    trace_to(X, a.q);
+    trace_to(X, a.q, a.kink);
     prev = a; prev_k = k; since = Isometry();
   }
   res.lift_distance = res.length;
