@@ -67,9 +67,13 @@ CGAL_HC_TEST_CASE(demo_meshes_genus_at_least_2)
     const double defect = emb.relator_defect(), cond = emb.relator_condition();
     CGAL_HC_CHECK_MSG(!std::isnan(defect) && !std::isnan(cond), name); // an overflow is +infinity, never "0"
     if(cond <= 1e6) CGAL_HC_CHECK_MSG(defect <= 1e-8, name << ": relator defect " << defect << ", condition " << cond);
+    // the cut and paste to a canonical system (the layer's) at every genus (it threw "a letter appears once
+    // only" on turbine.off, genus 11, until the fix of make_canonical; 0.45 s on cheese.off, genus 133); its
+    // double defect overflows where the canonical words are long (turbine, cheese: the products of up to
+    // thousands of generators), so it is printed, not checked
+    CGAL_HC_CHECK_MSG(emb.canonical_words().size() == std::size_t(2 * g), name);
     std::string canonical = "n/a";
-    // (the cut and paste to a canonical system, owned by the layer, is slow at high genus: run up to genus 4 here)
-    if(g <= 4) try { canonical = std::to_string(emb.canonical_relator_defect()); } catch(const CGAL::Numerical_error&) {}
+    try { std::ostringstream os; os << emb.canonical_relator_defect(); canonical = os.str(); } catch(const CGAL::Numerical_error&) {}
     std::cout << "  " << name << ": genus " << g << ", " << r.statistics().iterations << " iterations, max |K| "
               << surface.max_angle_defect() << ", min |trace| " << min_trace << ", relator defect " << defect
               << " (condition " << cond << "), canonical relator defect " << canonical << std::endl;
