@@ -323,7 +323,8 @@ trace_geodesic(const Surface& surface, const typename Surface::Point& start, con
     if(options.progress && lifted + tr.count() >= next_report) { options.progress(lifted + tr.count()); next_report <<= 1; }
     if(end.on_vertex && reaimed == 0) {
       for(int i = 0; i < 3; ++i) {
-        if(source(tr.halfedge_at(i), tm) != end.v) continue;
+        // (d(z, T) >= |z - T|: the cheap test first)
+        if(source(tr.halfedge_at(i), tm) != end.v || !(std::norm(tr.z()[i] - T) < other_lift_mismatch * other_lift_mismatch)) continue;
         const double d = internal::hyperbolic_distance(tr.z()[i], T);
         if(d > 0 && d < other_lift_mismatch && internal::distance_to_origin(tr.z()[i]) > 0) { reaimed = d; T = tr.z()[i]; break; }
       }
