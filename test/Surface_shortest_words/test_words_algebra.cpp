@@ -403,3 +403,109 @@ CGAL_HC_TEST_CASE(dehn_reduce_matches_reference)
   std::cout << "  " << compared << " words compared, " << replaced << " shortened by a relator piece" << std::endl;
   CGAL_HC_CHECK(replaced > compared / 4);
 }
+
+namespace {
+// the word with first letter `first` and then the given turns (number of tiles on the left, 1 .. 4g - 1)
+Word word_from_turns(const Word& R, int first, const std::vector<int>& turns)
+{
+  const int n = int(R.size()) / 2;
+  const std::vector<int> next = ccw_next_directions(R);
+  std::vector<int> prev(next.size(), 0);
+  for(int l = -n; l <= n; ++l) if(l) prev[std::size_t(next[std::size_t(l + n)] + n)] = l;
+  Word w{first};
+  for(int t : turns) {
+    int y = -w.back();
+    for(int s = 0; s < t; ++s) y = prev[std::size_t(y + n)];
+    w.push_back(y);
+  }
+  return w;
+}
+} // namespace
+
+// The cost proof of Geodesic_word_reducer (O(g |w|)), checked on every word: at most one rule per letter of
+// w, at most one chain mark created by a replacement, and the total work within the proven bound. Words made to
+// stress chains: long chains, chains glued to chains of the other side, turn sequences of pieces of 2g - 1 and
+// 2g edges with junctions (both sides, random), the half relator repeated, random words; genus 2 to 8, the
+// canonical relator and random one-vertex relators; lengths up to 10^5.
+CGAL_HC_TEST_CASE(reduction_work_is_linear)
+{
+  std::mt19937 rng(4242);
+  long words = 0, rules = 0, chain_rules = 0;
+  for(int g = 2; g <= 8; ++g) {
+    const int p = 4 * g, h = 2 * g;
+    double worst_ratio = 0;
+    std::size_t most_replaced = 0, most_marks = 0;
+    for(int relator = 0; relator < 3; ++relator) {
+      const Word Rel = relator == 0 ? W::canonical_relator(g) : random_one_vertex_relator(g, rng);
+      const W::Geodesic_word_reducer red(Rel);
+      auto check = [&](const Word& w, const char* family) {
+        W::Reduction_statistics st;
+        const Word r = red.reduce(w, &st);
+        ++words;
+        rules += long(st.free_cancellations + st.dehn_rules + st.chain_rules);
+        chain_rules += long(st.chain_rules);
+        most_replaced = (std::max)(most_replaced, st.replaced_letters);
+        most_marks = (std::max)(most_marks, st.max_marks_per_replacement);
+        CGAL_HC_CHECK_MSG(st.max_rules_per_input_letter <= 1, family << ", genus " << g << ", |w| = " << w.size()
+                          << ": " << st.max_rules_per_input_letter << " rules for one letter");
+        CGAL_HC_CHECK_MSG(st.max_marks_per_replacement <= 1, family << ", genus " << g << ": a replacement created "
+                          << st.max_marks_per_replacement << " marks");
+        CGAL_HC_CHECK_MSG(st.work() <= W::Reduction_statistics::bound(g, w.size()), family << ", genus " << g
+                          << ": work " << st.work() << " above the bound for |w| = " << w.size());
+        CGAL_HC_CHECK(st.pushes >= r.size() && (w.size() - r.size()) % 2 == 0);
+        CGAL_HC_CHECK(red.reduce(r).size() == r.size());
+        if(w.size() <= 20000) { // the same element (Dehn's algorithm decides the word problem)
+          Word q = r;
+          W::append_reduced(q, W::inverse(w));
+          CGAL_HC_CHECK_MSG(W::dehn_reduce(q, Rel).empty(), family << ": reduced word is another element");
+        }
+        if(!w.empty()) worst_ratio = (std::max)(worst_ratio, double(st.work()) / double(w.size()));
+      };
+      auto random_letter = [&]() { int l = int(rng() % unsigned(2 * g)) + 1; return rng() % 2 ? l : -l; };
+      for(std::size_t n : {1000, 20000, 100000}) {
+        check(random_reduced_word(g, n, rng), "random");
+        // one long chain, on each side, alone and glued at both ends to random letters
+        const int k = int(n / std::size_t(h - 1));
+        for(bool left : {true, false}) {
+          Word c = chain_word(Rel, random_letter(), k, left);
+          check(c, "one chain");
+          Word w = random_reduced_word(g, 5, rng);
+          W::append_reduced(w, c);
+          W::append_reduced(w, random_reduced_word(g, 5, rng));
+          check(w, "chain with random ends");
+        }
+        // chains of random lengths glued to each other (either side), with 0 to 2 random letters between
+        Word glued;
+        while(glued.size() < n) {
+          W::append_reduced(glued, chain_word(Rel, random_letter(), 2 + int(rng() % 40), rng() % 2 == 0));
+          W::append_reduced(glued, random_reduced_word(g, rng() % 3, rng));
+        }
+        check(glued, "glued chains");
+        // turn sequences made of pieces of 2g - 1 or 2g edges and junctions, on a random side per piece
+        for(int variant = 0; variant < 3; ++variant) {
+          std::vector<int> turns;
+          bool left = true;
+          while(turns.size() < n) {
+            if(variant == 1 || rng() % 8 == 0) left = !left;
+            const int edges = rng() % 4 == 0 ? h : h - 1;
+            for(int e = 1; e < edges; ++e) turns.push_back(left ? 1 : p - 1);
+            turns.push_back(variant == 2 && rng() % 5 == 0 ? (left ? 3 : p - 3) : (left ? 2 : p - 2));
+          }
+          check(word_from_turns(Rel, random_letter(), turns), "piece turns");
+        }
+        // the half relator repeated (a Dehn piece at every period), and half relator plus one letter
+        Word half(Rel.begin(), Rel.begin() + h), rep;
+        while(rep.size() < n) W::append_reduced(rep, half);
+        check(rep, "half relator power");
+        Word more(Rel.begin(), Rel.begin() + h + 1), rep2;
+        while(rep2.size() < n) W::append_reduced(rep2, more);
+        check(rep2, "long piece power");
+      }
+    }
+    std::cout << "  genus " << g << ": work / |w| at most " << worst_ratio << " (bound "
+              << double(W::Reduction_statistics::bound(g, 1)) << "), most letters replaced in one word "
+              << most_replaced << ", most marks created by one replacement " << most_marks << std::endl;
+  }
+  std::cout << "  " << words << " words, " << rules << " rules (" << chain_rules << " chains)" << std::endl;
+  CGAL_HC_CHECK(chain_rules > 1000);
+}

@@ -135,6 +135,23 @@ inline std::vector<int> surface_relator_link(const std::vector<int>& R)
   return pos;
 }
 
+/// counts of one `Geodesic_word_reducer::reduce()` call (the quantities of its cost proof)
+struct Reduction_statistics
+{
+  std::size_t input_letters = 0;          ///< letters of w
+  std::size_t pushes = 0;                 ///< letters pushed (w's and the replacements')
+  std::size_t free_cancellations = 0, dehn_rules = 0, chain_rules = 0;
+  std::size_t replaced_letters = 0;       ///< letters removed by Dehn and chain rules
+  std::size_t marks_created = 0;          ///< stack positions where a valid chain prefix ends (per side)
+  std::size_t max_rules_per_input_letter = 0;
+  std::size_t max_marks_per_replacement = 0; ///< marks created by the pushes of one rule's replacement
+  /// total work: pushes, free cancellations, removed letters and the chain's tile count (at most its length)
+  std::size_t work() const { return pushes + free_cancellations + 2 * replaced_letters; }
+  /// the bound of the proof (`Geodesic_word_reducer`): (3 (14 g + 1) + 2) |w|
+  static std::size_t bound(int genus, std::size_t n) { return (3 * (14 * std::size_t(genus) + 1) + 2) * n; }
+};
+
+
 /*!
   Geodesic (shortest) words in the surface group G = < x_1, ..., x_2g | R >, R a one-vertex surface relator of
   genus g >= 2 (e.g. the canonical [a1, b1] ... [ag, bg]): returns a shortest word representing the same
@@ -153,10 +170,33 @@ inline std::vector<int> surface_relator_link(const std::vector<int>& R)
   A chain of length L is replaced by the path on the other side of T_1 ... T_k, which has L - 2 edges; a
   piece of m > 2g edges by the 4g - m others. The reduction is done by a stack: each letter is pushed, and
   the turn, run and chain state of the top are updated in O(1); a rule that applies to a suffix of the stack
-  is applied and the replacement is pushed again. Every rule shortens the word, so at most |w| / 2 rules
-  apply; the result contains no pattern (each letter was checked with the final stack below it). Cost
-  O(|w| + total length of the replaced pieces), in practice linear. Throws std::invalid_argument if R is
-  not a one-vertex surface relator of genus >= 2.
+  is applied and the replacement is pushed again. The result contains no pattern (each letter was checked
+  with the final stack below it), so it is geodesic by the theorem.
+
+  Cost: O(g |w|) (linear in |w| for a fixed genus). Proof, with the counts of `Reduction_statistics`:
+  1. *At most one rule (free cancellation, Dehn or chain) per letter of w.* After each letter of w the stack
+     is geodesic (above). Every relator has even length, so |u x| = |u| +- 1 for every word u and letter x:
+     if the geodesic stack u followed by x is not geodesic, the element has length |u| - 1. Every rule
+     shortens by exactly 2 (a piece reaches 2g + 1 edges one letter at a time, and 2(2g + 1) - 4g = 2), so
+     exactly one rule applies before the stack is geodesic again; the replacement's letters apply none.
+  2. *Marks.* Call a stack position marked on a side when a valid chain prefix ends there (`chain[side]`:
+     the last letter of a complete first piece of 2g edges, or of a middle piece of 2g - 1 edges after a
+     junction). Marks never change while their letter is on the stack. A chain of k tiles has
+     L = 4g + (k - 2)(2g - 1) <= 4g (k - 1) letters and k - 1 marks, all removed by the rule.
+  3. *A replacement creates at most 1 mark.* No pattern ends at any stack letter (a push that completes one
+     is removed). A rule's replacement lies on the other side of the rule's tiles: pieces of 2g - 1 edges
+     (one for a Dehn rule, k for a chain) joined by junctions; let z be the stack letter below it. Its first
+     piece cannot contain z (the turn from z would be 0, a cancellation), and it is not a middle piece: z
+     would be marked on that side with the rule's first letter continuing its piece (turn 1 from z), so that
+     letter would have completed a Dehn piece or a chain when it was pushed. So no mark on that side. On the
+     rule's side the replacement turns by 4g - 1 or 4g - 2, so its pieces there have one edge, except the
+     first letter's, which may continue z's piece: at most 1 mark.
+  Work = pushes + free cancellations + 2 x removed letters (the letters and the chain's tile count), with
+  pushes <= |w| + removed letters. By 1, Dehn rules remove at most (2g + 1) |w| letters; by 2 and 3 chains
+  remove at most 4g times the marks created, at most 2 per letter of w and 1 per rule: 12 g |w|. Hence
+  work <= (3 (14 g + 1) + 2) |w| (`Reduction_statistics::bound()`); the test `reduction_work_is_linear`
+  checks statements 1 and 3 and the bound on every word it reduces. Throws std::invalid_argument if R is not
+  a one-vertex surface relator of genus >= 2.
 */
 class Geodesic_word_reducer
 {
@@ -169,15 +209,32 @@ public:
     for(int l = -n_; l <= n_; ++l) if(l != 0) dir_[std::size_t(pos_[letter_index(l, n_)])] = l;
   }
 
-  std::vector<int> reduce(const std::vector<int>& w) const
+  std::vector<int> reduce(const std::vector<int>& w, Reduction_statistics* stats = nullptr) const
   {
     std::vector<Entry> S;
     std::vector<int> todo(w.rbegin(), w.rend()); // a stack: back() is the next letter
     S.reserve(w.size());
+    Reduction_statistics local;
+    Reduction_statistics& st = stats ? *stats : local;
+    st = Reduction_statistics();
+    st.input_letters = w.size();
+    // todo = the unread letters of w (bottom) and the pending replacement letters (top)
+    std::size_t unread = w.size(), rules_now = 0, marks_now = 0;
     while(!todo.empty()) {
+      const bool from_input = todo.size() == unread;
       const int x = todo.back(); todo.pop_back();
       if(x == 0 || std::abs(x) > n_) throw std::invalid_argument("geodesic words: letter out of range");
-      push(S, x, todo);
+      if(from_input) { --unread; rules_now = 0; }
+      const std::size_t pending = todo.size();
+      const std::size_t rules_before = st.free_cancellations + st.dehn_rules + st.chain_rules;
+      push(S, x, todo, st);
+      if(st.free_cancellations + st.dehn_rules + st.chain_rules != rules_before) {
+        st.max_rules_per_input_letter = (std::max)(st.max_rules_per_input_letter, ++rules_now);
+        marks_now = 0;
+      } else if(!from_input && todo.size() == pending) {
+        marks_now += std::size_t((S.back().chain[0] >= 0) + (S.back().chain[1] >= 0));
+        st.max_marks_per_replacement = (std::max)(st.max_marks_per_replacement, marks_now);
+      }
     }
     std::vector<int> r;
     r.reserve(S.size());
@@ -202,9 +259,10 @@ private:
   // number of tiles on the left of the path x then y (0: y = x^-1)
   int turn(int x, int y) const { return (((position(-x) - position(y)) % p_) + p_) % p_; }
 
-  void push(std::vector<Entry>& S, int x, std::vector<int>& todo) const
+  void push(std::vector<Entry>& S, int x, std::vector<int>& todo, Reduction_statistics& st) const
   {
-    if(!S.empty() && S.back().letter == -x) { S.pop_back(); return; }
+    if(!S.empty() && S.back().letter == -x) { S.pop_back(); ++st.free_cancellations; return; }
+    ++st.pushes;
     Entry e;
     e.letter = x;
     e.turn = S.empty() ? -1 : turn(S.back().letter, x);
@@ -217,23 +275,26 @@ private:
       const int edges = t.run[side] + 1;           // edges of the current piece
       const long s = i - t.run[side];              // first letter of the piece
       const bool after_junction = s > 0 && S[std::size_t(s)].turn == two && S[std::size_t(s - 1)].chain[side] >= 0;
-      if(edges > h_) { replace(S, s, 1, side, todo); return; }          // more than half a tile
+      if(edges > h_) { ++st.dehn_rules; replace(S, s, 1, side, todo, st); return; } // more than half a tile
       if(edges == h_ && after_junction) {                                  // a chain ends here
         const long c = S[std::size_t(s - 1)].chain[side];
         int tiles = 1;
         for(long j = c + 1; j <= i; ++j) if(S[std::size_t(j)].turn == two) ++tiles;
-        replace(S, c, tiles, side, todo);
+        ++st.chain_rules;
+        replace(S, c, tiles, side, todo, st);
         return;
       }
       t.chain[side] = edges == h_ ? s : (edges == h_ - 1 && after_junction ? S[std::size_t(s - 1)].chain[side] : -1);
+      if(t.chain[side] >= 0) ++st.marks_created;
     }
   }
 
   // replaces S[c..] (pieces of `tiles` consecutive tiles on `side`) by the path on the other side of them:
   // 4g - m edges for one tile with a piece of m edges, 2g - 1 edges per tile for a chain
-  void replace(std::vector<Entry>& S, long c, int tiles, int side, std::vector<int>& todo) const
+  void replace(std::vector<Entry>& S, long c, int tiles, int side, std::vector<int>& todo, Reduction_statistics& st) const
   {
     const long m = long(S.size()) - c;
+    st.replaced_letters += std::size_t(m);
     const int step = side == 0 ? 1 : -1; // the other side of a tile on the left starts one step ccw
     std::vector<int> rep;
     rep.push_back(direction(position(S[std::size_t(c)].letter) + step));
