@@ -78,6 +78,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<int> c = r;
     W::append_reduced(c, W::inverse(w));
     if(!W::dehn_reduce(c, solver.relator()).empty() || r.size() > w.size() || solver.reduce(r) != r) std::abort();
+    // the statements of the reduction's linear cost proof (Geodesic_word_reducer)
+    W::Reduction_statistics rs;
+    if(W::Geodesic_word_reducer(solver.relator()).reduce(w, &rs) != r || rs.max_rules_per_input_letter > 1 ||
+       rs.max_marks_per_replacement > 1 || rs.work() > W::Reduction_statistics::bound(g, w.size()))
+      std::abort();
   }
   // a loop on the mesh
   std::vector<Mesh::Halfedge_index> hs;
