@@ -17,6 +17,7 @@
 #include <complex>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Discrete_Ricci_flow {
@@ -55,6 +56,11 @@ struct Motion
   static Motion identity(bool hyp) { Motion m; m.hyperbolic = hyp; return m; }
   static Motion from(const Long_isometry& g) { Motion m; m.h = g; return m; }
   static Motion euclidean(Cplx a, Cplx b) { Motion m; m.hyperbolic = false; m.a = a; m.b = b; return m; }
+  /// the hyperbolic translation taking c (in the disk) to the origin
+  static Motion translation_to_origin(const Cplx& c)
+  {
+    return from(Long_isometry::translation_to_origin(Long_kernel::Point_2(c.real(), c.imag())));
+  }
 
   Cplx operator()(Cplx z) const
   {
@@ -89,6 +95,29 @@ struct Motion
     return std::isfinite(r) ? r : inf;
   }
 };
+
+/// the letter l of a word over `generators`: generator l - 1 for l > 0, the inverse of generator -l - 1 for l < 0
+template <class G>
+G letter(const std::vector<G>& generators, int l)
+{
+  return l > 0 ? generators[l - 1] : generators[-l - 1].inverse();
+}
+
+/// the product of the letters of the word w over `generators`, right-multiplied onto m (the identity)
+template <class G>
+G word_product(const std::vector<G>& generators, const std::vector<int>& w, G m)
+{
+  for(const int l : w) m = m * letter(generators, l);
+  return m;
+}
+
+/// |alpha|^2 + |beta|^2 of an SU(1,1) matrix: cosh d(0, g 0) when g is normalized
+template <class Isometry>
+typename Isometry::FT squared_norm(const Isometry& g)
+{
+  return g.alpha_real() * g.alpha_real() + g.alpha_imag() * g.alpha_imag() + g.beta_real() * g.beta_real() +
+         g.beta_imag() * g.beta_imag();
+}
 
 /// the Euclidean chart of a triangle with side lengths l0 = |z0 z1|, l1 = |z1 z2|, l2 = |z2 z0|,
 /// counterclockwise, centroid at the origin
