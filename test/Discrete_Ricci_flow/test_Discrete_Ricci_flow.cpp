@@ -205,6 +205,61 @@ CGAL_HC_TEST_CASE(hessian_matches_finite_differences)
   }
 }
 
+// the engine's corner angles for vertex scaling (atan2(sqrt(Q), 2 num) from x = sinh, sin (l / 2), l / 2, no
+// sinh of the lengths) against ref_angle() in long double from the same x, on triangles of every
+// shape (u spread over [-2, 2], faces within 1e-9 of degenerate excluded) and size (printed)
+CGAL_HC_TEST_CASE(vertex_scaling_angles_match_a_long_double_reference)
+{
+  Mesh tm = read_mesh(cgal_mesh("eight.off"));
+  struct Case { Background_geometry geo; double scale; };
+  const Case cases[] = {{Background_geometry::EUCLIDEAN, 1.0}, {Background_geometry::HYPERBOLIC, 0.05},
+                        {Background_geometry::HYPERBOLIC, 1.0}, {Background_geometry::HYPERBOLIC, 20.0},
+                        {Background_geometry::SPHERICAL, 0.05}, {Background_geometry::SPHERICAL, 0.5}};
+  for(const Case& cs : cases) {
+    Mesh m = tm;
+    RF::internal::Flow_engine<Point_3> eng(m, cs.geo, RF::Scheme::VERTEX_SCALING, false);
+    for(auto e : m.edges()) {
+      const auto h = m.halfedge(e);
+      eng.edge_data[e] = 0.5 * cs.scale * std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
+    }
+    const double spread = cs.geo == Background_geometry::SPHERICAL ? 0.5 : 2.0;
+    for(auto v : m.vertices()) eng.u[v] = spread * std::sin(1.7 * double(v) + 0.3);
+    eng.compute_lengths(); eng.compute_angles();
+    double max_err = 0, min_angle = 10, max_angle = 0, max_length = 0;
+    std::size_t checked = 0;
+    for(auto f : m.faces()) {
+      const auto h0 = m.halfedge(f);
+      const decltype(h0) hs[3] = {h0, m.next(h0), m.prev(h0)};
+      long double l[3];
+      for(int i = 0; i < 3; ++i) {
+        const auto e = m.edge(hs[i]);
+        // the engine's double x (the reference measures the error of the angle formula, not of x)
+        const long double x = eng.edge_data[e] * std::exp(0.5 * (eng.u[m.vertex(e, 0)] + eng.u[m.vertex(e, 1)]));
+        l[i] = cs.geo == Background_geometry::EUCLIDEAN ? 2 * x
+               : cs.geo == Background_geometry::HYPERBOLIC ? 2 * std::asinh(x) : (x < 1 ? 2 * std::asin(x) : 10.0L);
+        max_length = (std::max)(max_length, double(l[i]));
+      }
+      bool proper = true;
+      for(int i = 0; i < 3; ++i) if(!(l[i] < (l[(i + 1) % 3] + l[(i + 2) % 3]) * (1 - 1e-9L))) proper = false;
+      if(cs.geo == Background_geometry::SPHERICAL && !(l[0] + l[1] + l[2] < 2 * CGAL_PI * (1 - 1e-9))) proper = false;
+      if(!proper) continue;
+      for(int i = 0; i < 3; ++i) { // the angle facing hs[i]
+        // E^2: the half-angle form too (ref_angle()'s acos loses sqrt(eps) on small angles)
+        const long double ref = cs.geo != Background_geometry::EUCLIDEAN ? ref_angle(cs.geo, l[i], l[(i + 1) % 3], l[(i + 2) % 3])
+          : [&] { const long double a = l[i], b = l[(i + 1) % 3], c = l[(i + 2) % 3], p = (a + b + c) / 2;
+                  return 2 * std::atan(std::sqrt((p - b) * (p - c) / (p * (p - a)))); }();
+        max_err = (std::max)(max_err, double(std::abs((long double)eng.angle[hs[i]] - ref)));
+        min_angle = (std::min)(min_angle, double(ref)); max_angle = (std::max)(max_angle, double(ref));
+      }
+      ++checked;
+    }
+    std::cout << "  geometry " << int(cs.geo) << ", scale " << cs.scale << ": " << checked << " faces, angles "
+              << min_angle << " .. " << max_angle << ", lengths up to " << max_length << ", max |angle - long double reference| = " << max_err << std::endl;
+    CGAL_HC_CHECK(checked > m.number_of_faces() / 4);
+    CGAL_HC_CHECK_MSG(max_err < 1e-12, "max angle error " << max_err);
+  }
+}
+
 // ------------------------------------------------------------------ bad input
 static Mesh icosahedron_like_sphere()
 {

@@ -543,7 +543,7 @@ bool write_input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& el
   when flips change the connectivity. The Newton systems are solved by inexact Newton: conjugate gradients
   preconditioned by the sparse Cholesky factorization of an earlier Newton step (CHOLMOD supernodal or Eigen's
   `SimplicialLDLT`) to the relative residual min(0.1, max(error, 1e-8)), which keeps the convergence
-  quadratic; a new factorization (symbolic analysis reused, CHOLMOD keeping its first fill-reducing ordering)
+  quadratic; a new factorization (symbolic analysis reused, both solvers keeping their first fill-reducing ordering)
   only when they do not converge within a budget of a fraction of a factorization's cost, or when the line
   search rejects their direction. `reuse_factorization(false)` factorizes at every step. On the demo meshes 3
   to 10 Newton iterations with 2 to 4 factorizations; O(F) per iteration for the rest.

@@ -129,13 +129,70 @@ public:
     for(int i = 0; i < 3; ++i) { l[i] = len[m.edge(hs[i])]; cs[i] = m.target(hs[(i + 1) % 3]); }
   }
 
-  // recompute the cached angles of face f
+  // recompute the cached angles of face f. Vertex scaling: from x = sinh, sin (l / 2), l / 2 (see
+  // face_hessian()), theta_i = atan2(sqrt(Q), 2 num_i) with num_i = (x_j^2 + x_k^2 - x_i^2) / 2 + kappa x_j^2 x_k^2,
+  // the same angle as the half-angle formula of `triangle_angles_only()` (to a few ulps: Q and num_i have no
+  // cancellation but the one of the angle itself) without its four sinh (sin); degenerate faces (Luo's
+  // extension) and S^2 edges of length >= pi take `triangle_angles_only()`
   void update_face_angles(F f)
   {
     H hs[3]; V cs[3]; double l[3], th[3];
     face_data(m.halfedge(f), hs, cs, l);
+    double x[3], c[3], Q = 0, num[3];
+    if(scheme == Scheme::VERTEX_SCALING && triangle_is_proper(l) && vertex_scaling_face(hs, x, c) &&
+       algebraic_gram(x, Q, num)) {
+      const double sq = std::sqrt(Q);
+      for(int i = 0; i < 3; ++i) angle[hs[i]] = std::atan2(sq, 2 * num[i]);
+      return;
+    }
     triangle_angles_only(geo, l, th);
     for(int i = 0; i < 3; ++i) angle[hs[i]] = th[i];
+  }
+
+  // the strict triangle inequalities (and, S^2, perimeter < 2 pi)
+  bool triangle_is_proper(const double l[3]) const
+  {
+    for(int i = 0; i < 3; ++i) if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3])) return false;
+    return geo != Background_geometry::SPHERICAL || l[0] + l[1] + l[2] < 2 * CGAL_PI;
+  }
+
+  // kappa = 1 (H^2), -1 (S^2), 0 (E^2)
+  double kappa() const
+  {
+    return geo == Background_geometry::HYPERBOLIC ? 1.0 : (geo == Background_geometry::SPHERICAL ? -1.0 : 0.0);
+  }
+
+  // vertex scaling: x_j = lambda_j e^{(u_a + u_b) / 2} (= sinh, sin (l_j / 2), l_j / 2: the value behind
+  // len) and c_j = sqrt(1 + kappa x_j^2) of the edges of hs; false if some c_j = 0 (S^2, l_j >= pi)
+  bool vertex_scaling_face(const H hs[3], double x[3], double c[3]) const
+  {
+    const double k = kappa();
+    bool ok = true;
+    for(int j = 0; j < 3; ++j) {
+      const E e = m.edge(hs[j]);
+      x[j] = edge_data[e] * std::exp(0.5 * (u[m.vertex(e, 0)] + u[m.vertex(e, 1)]));
+      c[j] = std::sqrt((std::max)(0.0, 1 + k * x[j] * x[j]));
+      if(!(c[j] > 0)) ok = false;
+    }
+    return ok;
+  }
+
+  // Q = 16 area(x)^2 + 4 kappa (x_0 x_1 x_2)^2 (Kahan's stable Heron formula for the Euclidean triangle with
+  // sides x) and num_i = (x_j^2 + x_k^2 - x_i^2) / 2 + kappa x_j^2 x_k^2; false unless Q is finite and > 0
+  bool algebraic_gram(const double x[3], double& Q, double num[3]) const
+  {
+    const double k = kappa();
+    const double lo = (std::min)(x[0], x[1]), hi = (std::max)(x[0], x[1]);
+    const double s[3] = {(std::min)(lo, x[2]), (std::max)(lo, (std::min)(hi, x[2])), (std::max)(hi, x[2])}; // sorted
+    const double heron16 = (s[2] + (s[1] + s[0])) * (s[0] - (s[2] - s[1])) * (s[0] + (s[2] - s[1])) * (s[2] + (s[1] - s[0]));
+    const double p = x[0] * x[1] * x[2];
+    Q = heron16 + 4 * k * p * p;
+    if(!(Q > 0) || !std::isfinite(Q)) return false;
+    for(int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, kk = (i + 2) % 3;
+      num[i] = 0.5 * (x[j] * x[j] + x[kk] * x[kk] - x[i] * x[i]) + k * x[j] * x[j] * x[kk] * x[kk];
+    }
+    return std::isfinite(num[0]) && std::isfinite(num[1]) && std::isfinite(num[2]);
   }
 
   void compute_angles()
@@ -277,30 +334,36 @@ public:
     // dl[j][a]: d l_j / d u at corner a (source(h_j) = corner j+1, target(h_j) = corner j+2)
     double dl[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     if(scheme == Scheme::VERTEX_SCALING) {
-      // g(l) = sinh l (sin l) and d l / d u = tanh(l / 2) (tan(l / 2)) from one sinh (sin) of l / 2
-      double g[3];
+      // With one exp per edge of the face and no other transcendental function, from
+      // x_j = lambda_j e^{(u_a + u_b) / 2} = sinh(l_j / 2) (H^2), sin(l_j / 2) (S^2), l_j / 2 (E^2) and
+      // c_j = sqrt(1 + kappa x_j^2) = cosh, cos (l_j / 2), 1 (kappa = 1, -1, 0): g(l_j) = sinh l_j, sin l_j,
+      // l_j = 2 x_j c_j and d l_j / d u = x_j / c_j (tanh, tan (l_j / 2), l_j / 2). The laws of cosines in x
+      // (cosh l = 1 + 2 x^2, cos l = 1 - 2 x^2) give
+      //   cos theta_i = num_i / (x_j c_j x_k c_k),  num_i = (x_j^2 + x_k^2 - x_i^2) / 2 + kappa x_j^2 x_k^2,
+      //   g_j g_k sin theta_i = 2 sqrt(Q),  Q = 16 area(x)^2 + 4 kappa (x_0 x_1 x_2)^2
+      // (Q is the Gram determinant; area(x) the Euclidean triangle with sides x, by Kahan's stable Heron
+      // formula), the same for the three corners (law of sines): `algebraic_gram()`, which also gives the
+      // cached angles. It replaces 3 sinh (sin), 3 sin and 3 cos per face; an S^2 edge of length >= pi
+      // (c = 0) and H^2 lengths beyond about 200 (x^6 overflows) take the angle formulas.
+      double x[3], c[3], g[3], Q = 0, num[3];
+      const bool algebraic = vertex_scaling_face(hs, x, c) && algebraic_gram(x, Q, num);
       for(int j = 0; j < 3; ++j) {
-        double d = 0.5 * l[j];
-        if(geo == Background_geometry::EUCLIDEAN) g[j] = l[j];
-        else if(geo == Background_geometry::HYPERBOLIC) {
-          const double sh = std::sinh(0.5 * l[j]), ch = std::sqrt(1 + sh * sh);
-          g[j] = 2 * sh * ch; d = sh / ch;
-        } else {
-          const double sn = std::sin(0.5 * l[j]), cs = std::cos(0.5 * l[j]);
-          g[j] = 2 * sn * cs; d = l[j] < CGAL_PI ? sn / cs : 0.0;
-        }
+        g[j] = 2 * x[j] * c[j];
+        const double d = c[j] > 0 ? x[j] / c[j] : 0.0;
         dl[j][(j + 1) % 3] = dl[j][(j + 2) % 3] = d;
       }
-      // d theta_i / d l_j as in triangle_angle_derivatives(), with these g
-      double c[3];
-      for(int i = 0; i < 3; ++i) c[i] = std::cos(th[i]);
-      for(int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3, k = (i + 2) % 3;
-        const double A = g[j] * g[k] * std::sin(th[i]);
-        if(!(A > 0)) { dth[i][0] = dth[i][1] = dth[i][2] = 0; continue; }
-        const double gi = g[i] / A;
-        dth[i][i] = gi; dth[i][j] = -gi * c[k]; dth[i][k] = -gi * c[j];
-      }
+      if(algebraic) {
+        const double A = 2 * std::sqrt(Q); // g_j g_k sin theta_i for every i
+        for(int i = 0; i < 3; ++i) {
+          const int j = (i + 1) % 3, k = (i + 2) % 3;
+          const double gi = g[i] / A;
+          // cos theta = num / (x c x c)
+          dth[i][i] = gi;
+          dth[i][j] = -gi * num[k] / (x[i] * c[i] * x[j] * c[j]);
+          dth[i][k] = -gi * num[j] / (x[k] * c[k] * x[i] * c[i]);
+        }
+      } else
+        triangle_angle_derivatives(geo, l, th, dth);
     } else {
       triangle_angle_derivatives(geo, l, th, dth);
       for(int j = 0; j < 3; ++j) {

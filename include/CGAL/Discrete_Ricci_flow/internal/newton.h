@@ -3,7 +3,8 @@
 //
 // Newton's method with line search on the convex discrete Ricci energy (thesis Algorithm 1), on a Flow_engine,
 // with the sparse Cholesky factorization of CHOLMOD (supernodal, when configured with SuiteSparse) or Eigen's
-// SimplicialLDLT; the symbolic analysis is reused until Ptolemy flips change the sparsity pattern.
+// SimplicialLDLT; the symbolic analysis is reused until Ptolemy flips change the sparsity pattern, and the
+// fill-reducing ordering of the first pattern is kept for the later ones.
 #ifndef CGAL_DISCRETE_RICCI_FLOW_INTERNAL_NEWTON_H
 #define CGAL_DISCRETE_RICCI_FLOW_INTERNAL_NEWTON_H
 
@@ -106,11 +107,24 @@ public:
       free_cholmod_factor(); // do not keep two factorizations alive
     }
 #endif
+    // the fill-reducing ordering (AMD) of the first pattern is kept for the later ones, as CHOLMOD's
+    // (`CHOLMOD_GIVEN`): Ptolemy flips change a few entries, and Eigen's AMD with its symmetrization costs
+    // about a numeric factorization on these matrices. The permuted upper triangle P H P^T is factorized with
+    // the natural ordering (what SimplicialLDLT does internally after its own ordering)
+    if(ldlt_perm_.size() != H.rows()) {
+      Sparse_matrix C;
+      C = H.selfadjointView<Eigen::Lower>();
+      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+      Eigen::AMDOrdering<int>()(C, inverse);
+      ldlt_perm_ = inverse.inverse();
+    }
+    Sparse_matrix permuted(H.rows(), H.cols());
+    permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
     if(ldlt_version_ != pattern_version) {
-      ldlt_.analyzePattern(H); ldlt_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
+      ldlt_.analyzePattern(permuted); ldlt_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    ldlt_.factorize(H);
+    ldlt_.factorize(permuted);
     numeric_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ++st.number_of_factorizations;
     if(ldlt_.info() != Eigen::Success) return false;
@@ -142,7 +156,9 @@ public:
       return x.allFinite();
     }
 #endif
-    x = ldlt_.solve(x);
+    Eigen::VectorXd y = ldlt_perm_ * x;
+    y = ldlt_.solve(y);
+    x = ldlt_perm_.transpose() * y;
     return x.allFinite();
   }
 
@@ -210,7 +226,8 @@ private:
   bool started_ = false;
 #endif
   Sparse_solver kind_, used_ = Sparse_solver::SIMPLICIAL_LDLT;
-  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower> ldlt_;
+  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Upper, Eigen::NaturalOrdering<int> > ldlt_; // of P H P^T
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> ldlt_perm_;           // P (AMD, first pattern)
   int ldlt_version_ = -1;
   bool has_factor_ = false, positive_definite_ = false;
   double factorization_over_solve_ = 1, numeric_seconds_ = 0;
