@@ -36,7 +36,9 @@ typedef Eigen::SparseMatrix<double> Sparse_matrix;
 /// configured), Eigen's `SimplicialLDLT` below. Measured on an idle machine (2026-12-03, CPU time of the whole
 /// flow, `benchmark_Discrete_Ricci_flow`): `SimplicialLDLT` 1.2 to 1.8 times faster up to 89k faces (44k
 /// vertices: the factors of these near-planar graphs are small, and the supernodal method's set-up dominates),
-/// CHOLMOD 1.1 times faster at 0.36M faces (178k vertices) and 1.9 times at 1.4M faces.
+/// CHOLMOD 1.1 times faster at 0.36M faces (178k vertices) and 1.9 times at 1.4M faces. Since SimplicialLDLT
+/// keeps its first ordering (2026-12-06): the two within 15% of each other at 178k vertices, CHOLMOD 1.4 times
+/// faster at 325k vertices and 1.4 times at 711k (the manual's table).
 inline Sparse_solver default_solver(Sparse_solver s, std::size_t n)
 {
   if(s != Sparse_solver::DEFAULT) return s;
