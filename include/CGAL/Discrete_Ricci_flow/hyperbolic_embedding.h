@@ -63,7 +63,7 @@ namespace Discrete_Ricci_flow {
   - exact deck transformations (`deck_transformations_exact()`, on demand): the long-double ones converted
     exactly when their exact relator product is within 1e-10 of the identity, otherwise the same development
     in MPFR at a precision chosen from the measured condition, on the metric polished to that precision;
-    `relator_defect_exact()` is their exact product's defect (<= 1.1e-12 on every closed demo mesh);
+    `relator_defect_exact()` is their exact product's defect (<= 7.6e-12 on every closed demo mesh);
   - the relator: the boundary of the disk cut along the loops, read in the loops (`relator()`); the product of
     the deck transformations in that order is the identity: `relator_defect()` measures it as a user does
     (double products of the returned matrices), `relator_defect_long_double()` before the rounding;
