@@ -145,6 +145,9 @@ struct Flow_statistics
   std::size_t number_of_flips = 0;           ///< Ptolemy (intrinsic Delaunay) flips during the flow
   std::size_t number_of_initial_flips = 0;   ///< geometric flips of the input (`geometric_initial_flips`)
   std::size_t number_of_symbolic_factorizations = 0; ///< symbolic analyses (after pattern changes)
+  /// fill-reducing orderings computed: the first, and a new one whenever Ptolemy flips have made the kept
+  /// ordering's factor more than 1.2 times larger than it was for the pattern the ordering was computed for
+  std::size_t number_of_orderings = 0;
   std::size_t number_of_factorizations = 0;  ///< numeric factorizations (at most one per Newton iteration)
   double factorization_seconds = 0;          ///< time spent in analyzePattern + factorize + solve
   double first_factorization_seconds = 0;    ///< time of the first analyzePattern + factorize + solve

@@ -234,6 +234,7 @@ inline void accumulate(Flow_statistics& st, const Flow_statistics& rs)
   st.iterations += rs.iterations; st.polishing_iterations += rs.polishing_iterations;
   st.number_of_factorizations += rs.number_of_factorizations; st.factorization_seconds += rs.factorization_seconds;
   st.number_of_symbolic_factorizations += rs.number_of_symbolic_factorizations;
+  st.number_of_orderings += rs.number_of_orderings;
   st.number_of_flips += rs.number_of_flips;
   st.status = rs.status; st.max_curvature_error = rs.max_curvature_error;
   st.error_history.insert(st.error_history.end(), rs.error_history.begin(), rs.error_history.end());

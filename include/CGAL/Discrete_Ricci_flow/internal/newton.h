@@ -4,7 +4,7 @@
 // Newton's method with line search on the convex discrete Ricci energy (thesis Algorithm 1), on a Flow_engine,
 // with the sparse Cholesky factorization of CHOLMOD (supernodal, when configured with SuiteSparse) or Eigen's
 // SimplicialLDLT; the symbolic analysis is reused until Ptolemy flips change the sparsity pattern, and the
-// fill-reducing ordering of the first pattern is kept for the later ones.
+// fill-reducing ordering is kept for the later patterns while their factors stay small.
 #ifndef CGAL_DISCRETE_RICCI_FLOW_INTERNAL_NEWTON_H
 #define CGAL_DISCRETE_RICCI_FLOW_INTERNAL_NEWTON_H
 
@@ -37,7 +37,7 @@ typedef Eigen::SparseMatrix<double> Sparse_matrix;
 /// flow, `benchmark_Discrete_Ricci_flow`): `SimplicialLDLT` 1.2 to 1.8 times faster up to 89k faces (44k
 /// vertices: the factors of these near-planar graphs are small, and the supernodal method's set-up dominates),
 /// CHOLMOD 1.1 times faster at 0.36M faces (178k vertices) and 1.9 times at 1.4M faces. Since SimplicialLDLT
-/// keeps its first ordering (2026-12-06): the two within 15% of each other at 178k vertices, CHOLMOD 1.4 times
+/// keeps its ordering (2026-12-06): the two within 15% of each other at 178k vertices, CHOLMOD 1.4 times
 /// faster at 325k vertices and 1.4 times at 711k (the manual's table).
 inline Sparse_solver default_solver(Sparse_solver s, std::size_t n)
 {
@@ -47,8 +47,9 @@ inline Sparse_solver default_solver(Sparse_solver s, std::size_t n)
 
 /// The sparse Cholesky factorization of a symmetric matrix given by its lower triangle (compressed column
 /// storage), with the chosen solver. The symbolic analysis is redone only when the pattern version changes;
-/// CHOLMOD keeps the fill-reducing ordering of its first analysis for later patterns (Ptolemy flips change a
-/// few entries: the ordering stays good, and the nested-dissection ordering of large meshes is expensive).
+/// both solvers keep the fill-reducing ordering for later patterns (Ptolemy flips usually change a few
+/// entries: the ordering stays good, and computing one costs about a numeric factorization, more with the
+/// nested dissection of large meshes) until the factor has grown by `refill_ratio` (many flips: noisy input).
 /// CHOLMOD's LLT fails on an indefinite matrix: the factorization then falls back to LDLT.
 class Sparse_cholesky
 {
@@ -109,22 +110,28 @@ public:
       free_cholmod_factor(); // do not keep two factorizations alive
     }
 #endif
-    // the fill-reducing ordering (AMD) of the first pattern is kept for the later ones, as CHOLMOD's
-    // (`CHOLMOD_GIVEN`): Ptolemy flips change a few entries, and Eigen's AMD with its symmetrization costs
-    // about a numeric factorization on these matrices. The permuted upper triangle P H P^T is factorized with
-    // the natural ordering (what SimplicialLDLT does internally after its own ordering)
-    if(ldlt_perm_.size() != H.rows()) {
-      Sparse_matrix C;
-      C = H.selfadjointView<Eigen::Lower>();
-      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
-      Eigen::AMDOrdering<int>()(C, inverse);
-      ldlt_perm_ = inverse.inverse();
-    }
+    // the fill-reducing ordering (AMD) is kept across pattern changes, as CHOLMOD's (`CHOLMOD_GIVEN`): Ptolemy
+    // flips usually change a few entries, and Eigen's AMD with its symmetrization costs about a numeric
+    // factorization on these matrices. When the flips have made the kept ordering's factor more than
+    // `refill_ratio` times larger than it was for the pattern it was computed for, the ordering is recomputed
+    // (`refresh_ordering_()`). The permuted upper triangle P H P^T is factorized with the natural ordering
+    // (what SimplicialLDLT does internally after its own ordering)
     Sparse_matrix permuted(H.rows(), H.cols());
-    permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
-    if(ldlt_version_ != pattern_version) {
+    if(ldlt_perm_.size() != H.rows() || ldlt_version_ != pattern_version) {
+      const bool fresh = ldlt_perm_.size() != H.rows();
+      if(fresh) amd_ordering_(H, st);
+      permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
       ldlt_.analyzePattern(permuted); ldlt_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
-    }
+      const double lnz = double(ldlt_.matrixL().nestedExpression().nonZeros());
+      if(fresh) ldlt_lnz_reference_ = lnz;
+      else if(lnz > refill_ratio * ldlt_lnz_reference_) {
+        amd_ordering_(H, st);
+        permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
+        ldlt_.analyzePattern(permuted); ++st.number_of_symbolic_factorizations;
+        ldlt_lnz_reference_ = double(ldlt_.matrixL().nestedExpression().nonZeros());
+      }
+    } else
+      permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
     const auto t0 = std::chrono::steady_clock::now();
     ldlt_.factorize(permuted);
     numeric_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -174,7 +181,23 @@ public:
     return solve_in_place(x);
   }
 
+  /// a kept fill-reducing ordering is recomputed when the factor of the current pattern has more than this
+  /// many times the nonzeros it had for the pattern the ordering was computed for. Measured (2026-12-06,
+  /// refined_elephant.off with Gaussian vertex noise of 0.3 mean edge lengths: 32,892 Ptolemy flips, most of
+  /// them in the first Newton step): the first ordering kept, the flow took 4.2 s (SimplicialLDLT) and 3.1 s
+  /// (CHOLMOD) against 1.6 s with a new ordering at every pattern change; with this ratio 1.7 s and 2.7 s
+  static constexpr double refill_ratio = 1.2;
+
 private:
+  void amd_ordering_(const Sparse_matrix& H, Flow_statistics& st)
+  {
+    Sparse_matrix C;
+    C = H.selfadjointView<Eigen::Lower>();
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+    Eigen::AMDOrdering<int>()(C, inverse);
+    ldlt_perm_ = inverse.inverse();
+    ++st.number_of_orderings;
+  }
 #ifdef CGAL_HC_HAS_CHOLMOD
   bool cholmod_factorize_(const Sparse_matrix& H, int pattern_version, Flow_statistics& st)
   {
@@ -185,11 +208,8 @@ private:
     A.stype = -1; A.itype = CHOLMOD_INT; A.xtype = CHOLMOD_REAL; A.dtype = CHOLMOD_DOUBLE; A.sorted = 1; A.packed = 1;
     if(!L_ || cholmod_version_ != pattern_version) {
       std::vector<int> perm;
-      if(L_ && L_->Perm && L_->n == A.nrow) { // reuse the ordering of the first analysis
+      if(L_ && L_->Perm && L_->n == A.nrow) // reuse the ordering of the last fresh analysis
         perm.assign(static_cast<const int*>(L_->Perm), static_cast<const int*>(L_->Perm) + L_->n);
-        cm_.nmethods = 1; cm_.method[0].ordering = CHOLMOD_GIVEN;
-      } else
-        cm_.nmethods = 0; // CHOLMOD's default: AMD, and METIS when AMD's fill is poor (large meshes)
       // large matrices: no relaxed amalgamation with explicit zeros (CHOLMOD's default admits 80%, 10%, 5%
       // zeros in small, medium and large supernodes). Measured 2026-12-03 (idle machine): at 2.6M faces
       // (1.3M vertices) the factor takes 112 MB less (1.61 GB peak instead of 1.72 GB) in the same time
@@ -197,9 +217,17 @@ private:
       // CHOLMOD's default
       for(int k = 0; k < 3; ++k) cm_.zrelax[k] = A.nrow >= 1000000 ? 0.0 : default_zrelax_[k];
       free_cholmod_factor();
-      L_ = cholmod_analyze_p(&A, perm.empty() ? nullptr : perm.data(), nullptr, 0, &cm_);
-      cholmod_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
-      if(!L_ || cm_.status < CHOLMOD_OK) return false;
+      for(int attempt = 0; attempt < 2; ++attempt) {
+        if(!perm.empty()) { cm_.nmethods = 1; cm_.method[0].ordering = CHOLMOD_GIVEN; }
+        else cm_.nmethods = 0; // CHOLMOD's default: AMD, and METIS when AMD's fill is poor (large meshes)
+        L_ = cholmod_analyze_p(&A, perm.empty() ? nullptr : perm.data(), nullptr, 0, &cm_);
+        ++st.number_of_symbolic_factorizations;
+        if(!L_ || cm_.status < CHOLMOD_OK) { cholmod_version_ = -1; return false; }
+        if(perm.empty()) { ++st.number_of_orderings; cholmod_lnz_reference_ = cm_.lnz; break; }
+        if(cm_.lnz <= refill_ratio * cholmod_lnz_reference_) break;
+        free_cholmod_factor(); perm.clear(); // the kept ordering has grown too much fill: a new one
+      }
+      cholmod_version_ = pattern_version;
       factorization_over_solve_ = cm_.fl / (4 * cm_.lnz + 4 * double(A.nrow) + 1);
       // the analysis' workspace (6n integers) is larger than the numeric factorization's: freed, so that the
       // factorization allocates only what it needs
@@ -224,12 +252,14 @@ private:
   cholmod_factor* L_ = nullptr;
   cholmod_dense *x_ = nullptr, *y_ = nullptr, *e_ = nullptr;
   int cholmod_version_ = -1;
+  double cholmod_lnz_reference_ = 0; // nonzeros of the factor for the pattern the ordering was computed for
   double default_zrelax_[3] = {}; // CHOLMOD's defaults, read in the constructor
   bool started_ = false;
 #endif
   Sparse_solver kind_, used_ = Sparse_solver::SIMPLICIAL_LDLT;
   Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Upper, Eigen::NaturalOrdering<int> > ldlt_; // of P H P^T
-  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> ldlt_perm_;           // P (AMD, first pattern)
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> ldlt_perm_;           // P (AMD)
+  double ldlt_lnz_reference_ = 0; // nonzeros of the factor for the pattern P was computed for
   int ldlt_version_ = -1;
   bool has_factor_ = false, positive_definite_ = false;
   double factorization_over_solve_ = 1, numeric_seconds_ = 0;
