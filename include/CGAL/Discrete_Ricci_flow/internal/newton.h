@@ -113,25 +113,24 @@ public:
     // the fill-reducing ordering (AMD) is kept across pattern changes, as CHOLMOD's (`CHOLMOD_GIVEN`): Ptolemy
     // flips usually change a few entries, and Eigen's AMD with its symmetrization costs about a numeric
     // factorization on these matrices. When the flips have made the kept ordering's factor more than
-    // `refill_ratio` times larger than it was for the pattern it was computed for, the ordering is recomputed
-    // (`refresh_ordering_()`). The permuted upper triangle P H P^T is factorized with the natural ordering
-    // (what SimplicialLDLT does internally after its own ordering)
+    // `refill_ratio` times larger than it was for the pattern it was computed for, a new ordering is computed
+    // (`amd_ordering_()`). The permuted upper triangle P H P^T is factorized with the natural ordering (what
+    // SimplicialLDLT does internally after its own ordering)
+    const bool fresh = ldlt_perm_.size() != H.rows();
+    if(fresh) amd_ordering_(H, st);
     Sparse_matrix permuted(H.rows(), H.cols());
-    if(ldlt_perm_.size() != H.rows() || ldlt_version_ != pattern_version) {
-      const bool fresh = ldlt_perm_.size() != H.rows();
-      if(fresh) amd_ordering_(H, st);
-      permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
+    permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
+    if(fresh || ldlt_version_ != pattern_version) {
       ldlt_.analyzePattern(permuted); ldlt_version_ = pattern_version; ++st.number_of_symbolic_factorizations;
       const double lnz = double(ldlt_.matrixL().nestedExpression().nonZeros());
-      if(fresh) ldlt_lnz_reference_ = lnz;
-      else if(lnz > refill_ratio * ldlt_lnz_reference_) {
+      if(!fresh && lnz > refill_ratio * ldlt_lnz_reference_) {
         amd_ordering_(H, st);
         permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
         ldlt_.analyzePattern(permuted); ++st.number_of_symbolic_factorizations;
         ldlt_lnz_reference_ = double(ldlt_.matrixL().nestedExpression().nonZeros());
-      }
-    } else
-      permuted.selfadjointView<Eigen::Upper>() = H.selfadjointView<Eigen::Lower>().twistedBy(ldlt_perm_);
+      } else if(fresh)
+        ldlt_lnz_reference_ = lnz;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     ldlt_.factorize(permuted);
     numeric_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
