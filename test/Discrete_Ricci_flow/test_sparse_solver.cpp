@@ -6,6 +6,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
 #include <CGAL/Discrete_Ricci_flow.h>
 
 #include "cgal_hc_test.h"
@@ -28,6 +29,24 @@ Mesh read_cgal(const std::string& name)
   const std::string path = std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/" + name;
   if(!CGAL::IO::read_polygon_mesh(path, m)) throw std::runtime_error("cannot read " + path);
   return m;
+}
+
+// the CGAL demo meshes of `names` and then data/meshes/elephant_cid.obj (bad triangles, 11,834 flips)
+std::vector<Mesh> meshes_and_elephant_cid(const std::vector<std::string>& names)
+{
+  std::vector<Mesh> meshes;
+  for(const auto& n : names) meshes.push_back(read_cgal(n));
+  meshes.emplace_back();
+  CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_DATA_DIR) + "/meshes/elephant_cid.obj", meshes.back()));
+  return meshes;
+}
+
+// the solvers this build has
+std::vector<RF::Sparse_solver> available_solvers()
+{
+  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
+  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  return solvers;
 }
 
 // max |lower(H_triplets) - H_lower| over all entries, and whether the patterns agree (every triplet position
@@ -122,8 +141,7 @@ CGAL_HC_TEST_CASE(sparse_solvers_agree)
   const int n = int(H.rows());
   Eigen::VectorXd b(n);
   for(int i = 0; i < n; ++i) b[i] = std::sin(0.37 * i);
-  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
-  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  const std::vector<RF::Sparse_solver> solvers = available_solvers();
   std::vector<Eigen::VectorXd> xs;
   for(auto s : solvers) {
     RF::internal::Sparse_cholesky chol(s, std::size_t(n));
@@ -189,8 +207,7 @@ CGAL_HC_TEST_CASE(ordering_recomputed_when_the_fill_grows)
   const Eigen::SparseMatrix<double> H1 = grid({}), H2 = grid({{0, side + 1}});
   Eigen::VectorXd b(n);
   for(int i = 0; i < n; ++i) b[i] = std::cos(0.11 * i);
-  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
-  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  const std::vector<RF::Sparse_solver> solvers = available_solvers();
   for(auto s : solvers) {
     RF::internal::Sparse_cholesky chol(s, std::size_t(n));
     RF::Flow_statistics st;
@@ -242,15 +259,8 @@ CGAL_HC_TEST_CASE(ordering_recomputed_when_the_fill_grows)
 // with the same accuracy, the default with fewer factorizations; every mesh also with the other solver
 CGAL_HC_TEST_CASE(factorization_reuse_gives_the_same_metric)
 {
-  std::vector<Mesh> meshes;
-  meshes.push_back(read_cgal("eight.off"));
-  meshes.push_back(read_cgal("elephant.off"));
-  meshes.push_back(read_cgal("anchor.off"));
-  Mesh cid;
-  CGAL_HC_CHECK(CGAL::IO::read_polygon_mesh(std::string(CGAL_HC_DATA_DIR) + "/meshes/elephant_cid.obj", cid));
-  meshes.push_back(cid);
-  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
-  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  const std::vector<Mesh> meshes = meshes_and_elephant_cid({"eight.off", "elephant.off", "anchor.off"});
+  const std::vector<RF::Sparse_solver> solvers = available_solvers();
   std::size_t with_cg = 0;
   for(std::size_t k = 0; k < meshes.size(); ++k) for(auto s : solvers) {
     auto ref = RF::hyperbolic_uniformization(meshes[k], RF::parameters::reuse_factorization(false, RF::parameters::sparse_solver(s)));
@@ -280,6 +290,45 @@ CGAL_HC_TEST_CASE(factorization_reuse_gives_the_same_metric)
   CGAL_HC_CHECK(with_cg > 0); // the conjugate gradients did run
 }
 
+// the default polishing (Newton steps after CONVERGED at 1e-11) pays no factorization once the error is at most
+// 1e-12: a run with the default accuracy makes the factorizations of the same run without polishing
+// (accuracy(1e-11) given) plus at most one per polishing step started above 1e-12, ends at most at its error
+// and at most at 1e-12, and starts no polishing step below the polishing floor 1e-13. Before 2026-12-07 a
+// polishing step could factorize at any error (anchor.off, couplingdown.off, elephant_cid.obj: one more) and
+// the polishing went on below 1e-13 (anchor.off, couplingdown.off). Loop-subdivided elephant.off ends at
+// 2.3e-12 before polishing, where the polishing needs its factorization
+CGAL_HC_TEST_CASE(polishing_factorizes_only_above_1e_12)
+{
+  std::vector<Mesh> meshes = meshes_and_elephant_cid({"anchor.off", "couplingdown.off", "femur.off"});
+  meshes.push_back(read_cgal("elephant.off"));
+  CGAL::Subdivision_method_3::Loop_subdivision(meshes.back(), CGAL::parameters::number_of_iterations(1));
+  const std::vector<RF::Sparse_solver> solvers = available_solvers();
+  std::size_t polished = 0;
+  for(std::size_t k = 0; k < meshes.size(); ++k) for(auto s : solvers) {
+    auto plain = RF::hyperbolic_uniformization(meshes[k], RF::parameters::sparse_solver(s, CGAL::parameters::accuracy(1e-11)));
+    auto dflt = RF::hyperbolic_uniformization(meshes[k], RF::parameters::sparse_solver(s));
+    const auto& sp = plain.statistics();
+    const auto& sd = dflt.statistics();
+    CGAL_HC_CHECK_MSG(sp.converged() && sd.converged() && sp.polishing_iterations == 0, "mesh " << k);
+    CGAL_HC_CHECK(sd.iterations == sp.iterations + sd.polishing_iterations);
+    const std::size_t n = sd.error_history.size(), p = std::size_t(sd.polishing_iterations);
+    CGAL_HC_CHECK(n > p);
+    std::size_t above = 0; // polishing steps started above 1e-12 (a step that was not accepted is not in the history)
+    for(std::size_t j = 0; j <= p && n > p; ++j) if(sd.error_history[n - 1 - p + j] > 1e-12) ++above;
+    CGAL_HC_CHECK_MSG(sd.number_of_factorizations >= sp.number_of_factorizations &&
+                      sd.number_of_factorizations <= sp.number_of_factorizations + above, "mesh " << k << " solver "
+                      << int(s) << ": " << sd.number_of_factorizations << " factorizations against "
+                      << sp.number_of_factorizations << " without polishing, " << above << " polishing steps above 1e-12");
+    CGAL_HC_CHECK_MSG(sd.max_curvature_error <= sp.max_curvature_error && sd.max_curvature_error <= 1e-12,
+                      "mesh " << k << ": " << sd.max_curvature_error << " after polishing, " << sp.max_curvature_error << " before");
+    for(std::size_t j = 0; j < p && n > p; ++j)
+      CGAL_HC_CHECK_MSG(sd.error_history[n - 1 - p + j] > 1e-13, "mesh " << k << ": polishing step " << j << " started at "
+                        << sd.error_history[n - 1 - p + j]);
+    polished += p;
+  }
+  CGAL_HC_CHECK(polished > 0); // some polishing step was taken
+}
+
 // peak memory (issue 11): a factorization of a large matrix frees the engine's derived caches (lengths, corner
 // angles, curvatures) and recomputes them after. The recomputed caches equal those of an evaluation bit for bit,
 // and flows that free them at every factorization (threshold 0) follow the same iterates as flows that never do
@@ -301,17 +350,17 @@ CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
     eng.compute_lengths(); eng.compute_angles();
     CGAL_HC_CHECK(eng.make_delaunay());
     eng.compute_curvature();
-    const std::vector<double> len = eng.len, angle = eng.angle, K = eng.K;
+    const std::vector<double> len = eng.len, angle = eng.angle, K = eng.K, x = eng.x;
     eng.release_derived();
-    CGAL_HC_CHECK(eng.len.capacity() == 0 && eng.angle.capacity() == 0 && eng.K.capacity() == 0);
+    CGAL_HC_CHECK(eng.len.capacity() == 0 && eng.angle.capacity() == 0 && eng.K.capacity() == 0 && eng.x.capacity() == 0);
     eng.restore_derived();
-    CGAL_HC_CHECK(eng.len == len && eng.K == K);
+    // (x of the flipped edges was set by flip(), the others by compute_lengths(): the same formula)
+    CGAL_HC_CHECK(eng.len == len && eng.K == K && eng.x == x);
     std::size_t differ = 0; // (border halfedges have no corner: compared on faces only)
     for(auto h : mm.halfedges()) if(!mm.is_border(h) && eng.angle[h] != angle[h]) ++differ;
     CGAL_HC_CHECK_MSG(differ == 0, differ << " corner angles differ after restore_derived()");
   }
-  std::vector<RF::Sparse_solver> solvers = {RF::Sparse_solver::SIMPLICIAL_LDLT};
-  if(RF::has_cholmod()) solvers.push_back(RF::Sparse_solver::SUPERNODAL_CHOLMOD);
+  const std::vector<RF::Sparse_solver> solvers = available_solvers();
   for(auto s : solvers) {
     std::vector<double> u[2];
     RF::Flow_statistics st[2];

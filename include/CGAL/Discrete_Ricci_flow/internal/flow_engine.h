@@ -65,6 +65,9 @@ public:
   // circle packings: inversive distance I of each edge.
   std::vector<double> edge_data;
   std::vector<double> u, target, len, K;
+  // vertex scaling: per edge, x_e = lambda0_e e^{(u_a + u_b) / 2} (= sinh, sin (l_e / 2), l_e / 2: the value
+  // behind len), cached with len by compute_lengths() and flip() so that the face functions take no exp
+  std::vector<double> x;
   std::vector<double> angle; // per halfedge: the corner angle opposite to it in its face (cache)
   std::vector<char> v_is_border, e_is_border;
   std::size_t flips = 0, max_flips = 0;
@@ -81,6 +84,7 @@ public:
   {
     const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges();
     u.assign(nv, 0.0); target.assign(nv, 0.0); K.assign(nv, 0.0); len.assign(ne, 0.0);
+    if(scheme == Scheme::VERTEX_SCALING) x.assign(ne, 0.0);
     edge_data.assign(ne, 0.0);
     v_is_border.assign(nv, 0); e_is_border.assign(ne, 0);
     for(E e : m.edges()) if(m.is_border(e)) {
@@ -92,18 +96,31 @@ public:
   }
 
   // ------------------------------------------------------------ lengths
+  // vertex scaling: x_e at the current u (see `x`)
+  double scaled_lambda(E e) const
+  {
+    return edge_data[e] * std::exp(0.5 * (u[m.vertex(e, 0)] + u[m.vertex(e, 1)]));
+  }
+
   double edge_length(E e) const
   {
+    if(scheme == Scheme::VERTEX_SCALING) return length_from_lambda(geo, scaled_lambda(e));
     const V a = m.vertex(e, 0), b = m.vertex(e, 1);
-    if(scheme == Scheme::VERTEX_SCALING)
-      return length_from_lambda(geo, std::exp(0.5 * (u[a] + u[b])) * edge_data[e]);
     double d1, d2;
     return circle_packing_length(geo, radius_from_u(geo, u[a]), radius_from_u(geo, u[b]), edge_data[e], d1, d2);
   }
 
+  // len (and, vertex scaling, x) of edge e from the current u and edge_data
+  void update_length(E e)
+  {
+    if(scheme == Scheme::VERTEX_SCALING) { x[e] = scaled_lambda(e); len[e] = length_from_lambda(geo, x[e]); }
+    else len[e] = edge_length(e);
+  }
+
+  // the lengths (and x) at the current u: after every change of u, before the face functions
   void compute_lengths()
   {
-    for(E e : m.edges()) len[e] = edge_length(e);
+    for(E e : m.edges()) update_length(e);
   }
 
   // d l_e / d u_v for v = the source (first) and target (second) of halfedge h
@@ -162,16 +179,15 @@ public:
     return geo == Background_geometry::HYPERBOLIC ? 1.0 : (geo == Background_geometry::SPHERICAL ? -1.0 : 0.0);
   }
 
-  // vertex scaling: x_j = lambda_j e^{(u_a + u_b) / 2} (= sinh, sin (l_j / 2), l_j / 2: the value behind
-  // len) and c_j = sqrt(1 + kappa x_j^2) of the edges of hs; false if some c_j = 0 (S^2, l_j >= pi)
-  bool vertex_scaling_face(const H hs[3], double x[3], double c[3]) const
+  // vertex scaling: x_j = lambda_j e^{(u_a + u_b) / 2} (the cached `x` of compute_lengths()) and
+  // c_j = sqrt(1 + kappa x_j^2) of the edges of hs; false if some c_j = 0 (S^2, l_j >= pi)
+  bool vertex_scaling_face(const H hs[3], double xs[3], double c[3]) const
   {
     const double k = kappa();
     bool ok = true;
     for(int j = 0; j < 3; ++j) {
-      const E e = m.edge(hs[j]);
-      x[j] = edge_data[e] * std::exp(0.5 * (u[m.vertex(e, 0)] + u[m.vertex(e, 1)]));
-      c[j] = std::sqrt((std::max)(0.0, 1 + k * x[j] * x[j]));
+      xs[j] = x[m.edge(hs[j])];
+      c[j] = std::sqrt((std::max)(0.0, 1 + k * xs[j] * xs[j]));
       if(!(c[j] > 0)) ok = false;
     }
     return ok;
@@ -239,7 +255,7 @@ public:
       edge_data[e] = (lca * ldb + lad * lbc) / lab;
     flip_log.push_back(e);
     flip_connectivity(m, e);
-    len[e] = edge_length(e);
+    update_length(e);
     update_face_angles(fh); update_face_angles(fo);
     ++flips; ++pattern_version;
   }
@@ -264,16 +280,18 @@ public:
     return true;
   }
 
-  // The caches derived from (u, edge_data): lengths, corner angles, curvatures (half of the engine's memory:
-  // 12 doubles per vertex at 2.6M faces). A large factorization frees them (the factor needs the memory) and
+  // The caches derived from (u, edge_data): lengths, x, corner angles, curvatures (more than half of the
+  // engine's memory: 15 doubles per vertex at 2.6M faces). A large factorization frees them (the factor needs the memory) and
   // `restore_derived()` recomputes them from the same state, with the functions of an evaluation.
   void release_derived()
   {
     std::vector<double>().swap(len); std::vector<double>().swap(angle); std::vector<double>().swap(K);
+    std::vector<double>().swap(x);
   }
   void restore_derived()
   {
     len.assign(m.number_of_edges(), 0.0); angle.assign(m.number_of_halfedges(), 0.0); K.assign(m.number_of_vertices(), 0.0);
+    if(scheme == Scheme::VERTEX_SCALING) x.assign(m.number_of_edges(), 0.0);
     compute_lengths();
     compute_angles();
     compute_curvature();
@@ -334,7 +352,7 @@ public:
     // dl[j][a]: d l_j / d u at corner a (source(h_j) = corner j+1, target(h_j) = corner j+2)
     double dl[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     if(scheme == Scheme::VERTEX_SCALING) {
-      // With one exp per edge of the face and no other transcendental function, from
+      // With no transcendental function (the exp of each edge is taken once per evaluation, `x`), from
       // x_j = lambda_j e^{(u_a + u_b) / 2} = sinh(l_j / 2) (H^2), sin(l_j / 2) (S^2), l_j / 2 (E^2) and
       // c_j = sqrt(1 + kappa x_j^2) = cosh, cos (l_j / 2), 1 (kappa = 1, -1, 0): g(l_j) = sinh l_j, sin l_j,
       // l_j = 2 x_j c_j and d l_j / d u = x_j / c_j (tanh, tan (l_j / 2), l_j / 2). The laws of cosines in x

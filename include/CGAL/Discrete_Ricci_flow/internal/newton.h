@@ -269,10 +269,18 @@ struct Newton_options
 {
   int max_iterations = 100;
   double accuracy = 1e-11;
-  /// after reaching `accuracy`, keep taking Newton steps while the error at least halves (at most
-  /// `max_polishing_steps`): the default "iterate to the rounding level"
+  /// after reaching `accuracy`, keep taking Newton steps while the error at least halves and is above
+  /// `polishing_floor` (at most `max_polishing_steps`): the default "iterate to the rounding level". With
+  /// `reuse_factorization`, a polishing step from an error of at most `polishing_factorizes_above` takes its
+  /// direction from conjugate gradients preconditioned by the kept factorization only: when they miss their
+  /// tolerance the polishing ends instead of paying a factorization for a digit or two of rounding level
   bool polish = true;
   int max_polishing_steps = 4;
+  /// the error above which a polishing step may still factorize (what the embedding's relator needs)
+  double polishing_factorizes_above = 1e-12;
+  /// the error below which a polishing step gains nothing that can be told from rounding (the curvature of a
+  /// vertex is 2 pi minus a sum of rounded angles: the demo meshes' floors are 5e-15 to 1.5e-13)
+  double polishing_floor = 1e-13;
   bool verbose = false;
   Sparse_solver solver = Sparse_solver::DEFAULT;
   std::function<bool(const Flow_progress&)> callback; ///< false stops (CANCELLED)
@@ -358,7 +366,7 @@ private:
   // Inexact Newton (Dembo-Eisenstat-Steihaug): the relative residual of the direction is at most
   // eta = min(0.1, max(err, 1e-8)), which keeps the convergence quadratic (the residual is of the order of the
   // quadratic term) down to the rounding level; `fresh` forces a new factorization.
-  bool direction(double err, bool fresh)
+  bool direction(double err, bool fresh, bool may_factorize = true)
   {
     const auto t0 = std::chrono::steady_clock::now();
     eng_.hessian_lower(H_, o_.fixed);
@@ -371,7 +379,7 @@ private:
     // after a step that needed more than half of one the factorization is renewed (the Hessian has moved away
     // from the factorized one)
     const double ratio = 0.25 * chol_.factorization_over_solve();
-    if(last_cg_iterations_ > 0.5 * ratio) fresh = true;
+    if(last_cg_iterations_ > 0.5 * ratio && may_factorize) fresh = true;
     if(!fresh && o_.reuse_factorization && chol_.positive_definite()) {
       const int budget = int((std::max)(2.0, (std::min)(30.0, ratio)));
       int iterations = 0;
@@ -381,6 +389,7 @@ private:
       last_cg_iterations_ = ok ? iterations : 0;
       if(ok) { from_cg_ = true; return true; }
     }
+    if(!may_factorize && o_.reuse_factorization) return false;
     last_cg_iterations_ = 0;
     from_cg_ = false;
     const auto t2 = std::chrono::steady_clock::now();
@@ -441,7 +450,11 @@ private:
   // only a decrease of the max error (polishing)
   bool step(double& err, double& t, bool strict)
   {
-    if(!direction(err, false)) { st_.status = Flow_status::NUMERICAL_FAILURE; return false; }
+    // a polishing step (strict) near the rounding level only with the kept factorization (Newton_options::polish)
+    if(!direction(err, false, !strict || err > o_.polishing_factorizes_above)) {
+      if(!strict) st_.status = Flow_status::NUMERICAL_FAILURE;
+      return false;
+    }
     if(line_search(err, t, strict)) return true;
     // an inexact direction that the line search rejects: once more with a new factorization
     if(from_cg_ && !strict && st_.status == Flow_status::LINE_SEARCH_FAILED) {
@@ -511,7 +524,7 @@ private:
   // Newton converges quadratically: a few more steps reach the rounding level of double arithmetic
   void polish(double& err)
   {
-    for(int k = 0; k < o_.max_polishing_steps && err > 0; ++k) {
+    for(int k = 0; k < o_.max_polishing_steps && err > o_.polishing_floor; ++k) {
       const double before = err;
       double t = 1;
       if(!step(err, t, true)) { st_.status = Flow_status::CONVERGED; break; }
