@@ -325,6 +325,10 @@ CGAL_HC_TEST_CASE(polishing_factorizes_only_above_1e_12)
       CGAL_HC_CHECK_MSG(sd.error_history[n - 1 - p + j] > 1e-13, "mesh " << k << ": polishing step " << j << " started at "
                         << sd.error_history[n - 1 - p + j]);
     polished += p;
+    // the CG budget of SimplicialLDLT assumes a factorization twice (not 4 times, as CHOLMOD's) as fast per flop
+    // as a solve: elephant Loop x1 (22k faces) makes 3 factorizations (5 with the budget of CHOLMOD)
+    if(k == 4 && s == RF::Sparse_solver::SIMPLICIAL_LDLT)
+      CGAL_HC_CHECK_MSG(sd.number_of_factorizations <= 3, sd.number_of_factorizations << " factorizations");
   }
   CGAL_HC_CHECK(polished > 0); // some polishing step was taken
 }
