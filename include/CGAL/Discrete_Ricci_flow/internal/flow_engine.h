@@ -102,19 +102,13 @@ public:
     return edge_data[e] * std::exp(0.5 * (u[m.vertex(e, 0)] + u[m.vertex(e, 1)]));
   }
 
-  double edge_length(E e) const
-  {
-    if(scheme == Scheme::VERTEX_SCALING) return length_from_lambda(geo, scaled_lambda(e));
-    const V a = m.vertex(e, 0), b = m.vertex(e, 1);
-    double d1, d2;
-    return circle_packing_length(geo, radius_from_u(geo, u[a]), radius_from_u(geo, u[b]), edge_data[e], d1, d2);
-  }
-
   // len (and, vertex scaling, x) of edge e from the current u and edge_data
   void update_length(E e)
   {
-    if(scheme == Scheme::VERTEX_SCALING) { x[e] = scaled_lambda(e); len[e] = length_from_lambda(geo, x[e]); }
-    else len[e] = edge_length(e);
+    if(scheme == Scheme::VERTEX_SCALING) { x[e] = scaled_lambda(e); len[e] = length_from_lambda(geo, x[e]); return; }
+    const V a = m.vertex(e, 0), b = m.vertex(e, 1);
+    double d1, d2;
+    len[e] = circle_packing_length(geo, radius_from_u(geo, u[a]), radius_from_u(geo, u[b]), edge_data[e], d1, d2);
   }
 
   // the lengths (and x) at the current u: after every change of u, before the face functions
@@ -281,8 +275,8 @@ public:
   }
 
   // The caches derived from (u, edge_data): lengths, x, corner angles, curvatures (more than half of the
-  // engine's memory: 15 doubles per vertex at 2.6M faces). A large factorization frees them (the factor needs the memory) and
-  // `restore_derived()` recomputes them from the same state, with the functions of an evaluation.
+  // engine's memory: 15 doubles per vertex at 2.6M faces). A large factorization frees them (the factor needs
+  // the memory) and `restore_derived()` recomputes them from the same state, with the functions of an evaluation.
   void release_derived()
   {
     std::vector<double>().swap(len); std::vector<double>().swap(angle); std::vector<double>().swap(K);
