@@ -337,6 +337,59 @@ CGAL_HC_TEST_CASE(polishing_factorizes_only_above_1e_12)
 // peak memory (issue 11): a factorization of a large matrix frees the engine's derived caches (lengths, corner
 // angles, curvatures) and recomputes them after. The recomputed caches equal those of an evaluation bit for bit,
 // and flows that free them at every factorization (threshold 0) follow the same iterates as flows that never do
+// the face functions of vertex scaling skip the lengths of a face whose Gram quantity Q is clearly positive
+// (`Flow_engine::clearly_proper()`); that shortcut must never accept a face that the triangle inequalities of
+// its lengths (as the engine computes them from x) reject. Near-degenerate triangles in all three
+// backgrounds: defects 1e-17 to 1e-1, thin triangles down to 1e-9 of the longest side, lengths up to 200
+// (H^2), perimeters close to 2 pi (S^2).
+CGAL_HC_TEST_CASE(clearly_proper_faces_pass_the_length_test)
+{
+  Mesh mm = read_cgal("eight.off");
+  std::mt19937_64 gen(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  for(Geo geo : {Geo::HYPERBOLIC, Geo::EUCLIDEAN, Geo::SPHERICAL}) {
+    RF::internal::Flow_engine<Point_3> eng(mm, geo, RF::Scheme::VERTEX_SCALING, false);
+    auto lambda = [&](double l) {
+      return geo == Geo::HYPERBOLIC ? std::sinh(0.5 * l) : geo == Geo::EUCLIDEAN ? 0.5 * l : std::sin(0.5 * l);
+    };
+    std::size_t fast = 0, length_rejected = 0, fast_rejected_proper = 0, wrong = 0, samples = 0;
+    double max_rejected_ratio = 0; // the largest properness ratio of a face that fails the length test
+    for(int n = 0; n < 200000; ++n) {
+      const double top = geo == Geo::HYPERBOLIC ? std::pow(10.0, -6 + 8.3 * U(gen)) : geo == Geo::EUCLIDEAN ? std::pow(10.0, -6 + 12 * U(gen)) : 3.1 * U(gen);
+      const double defect = std::pow(10.0, -17 + 16 * U(gen)) * (U(gen) < 0.5 ? 1 : -1);
+      double l[3];
+      const int kind = n % 3;
+      if(kind == 2 && geo == Geo::SPHERICAL) { // perimeter close to 2 pi, edges below pi
+        l[0] = 2.2 + 0.9 * U(gen); l[1] = 2.2 + 0.9 * U(gen); l[2] = (2 * CGAL_PI - l[0] - l[1]) * (1 - defect);
+        if(!(l[2] > 0 && l[2] < CGAL_PI)) continue;
+      } else {
+        const double thin = kind == 1 ? std::pow(10.0, -9 * U(gen)) : 0.2 + 0.8 * U(gen);
+        l[1] = top * (1 - thin * U(gen)); l[2] = top * thin * U(gen) + 1e-300;
+        l[0] = (l[1] + l[2]) * (1 - defect);
+        if(geo == Geo::SPHERICAL && !(l[0] < CGAL_PI)) continue;
+      }
+      double xs[3], lp[3], Q = 0, num[3];
+      for(int i = 0; i < 3; ++i) { xs[i] = lambda(l[i]); lp[i] = RF::internal::length_from_lambda(geo, xs[i]); }
+      ++samples;
+      const bool proper = eng.triangle_is_proper(lp);
+      if(!proper) ++length_rejected;
+      if(!eng.algebraic_gram(xs, Q, num)) continue;
+      if(!proper) max_rejected_ratio = (std::max)(max_rejected_ratio, RF::internal::Flow_engine<Point_3>::properness_ratio(xs, Q));
+      if(RF::internal::Flow_engine<Point_3>::clearly_proper(xs, Q)) {
+        ++fast;
+        if(!proper) ++wrong;
+      } else if(proper) ++fast_rejected_proper;
+    }
+    std::cout << "  " << (geo == Geo::HYPERBOLIC ? "H2" : geo == Geo::EUCLIDEAN ? "E2" : "S2") << ": " << samples
+              << " triangles, " << length_rejected << " fail the length test, " << fast
+              << " clearly proper, " << fast_rejected_proper << " proper ones decided by their lengths; largest ratio"
+              << " of a face that fails the length test " << max_rejected_ratio << std::endl;
+    CGAL_HC_CHECK_MSG(wrong == 0, wrong << " faces clearly proper by Q fail the length test");
+    CGAL_HC_CHECK(max_rejected_ratio < 1e-10); // (a margin of 100 below the threshold 1e-8)
+    CGAL_HC_CHECK(length_rejected > samples / 10 && fast > samples / 20); // (both sides are exercised)
+  }
+}
+
 CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
 {
   const Mesh input = read_cgal("eight.off");
@@ -355,6 +408,7 @@ CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
     eng.compute_lengths(); eng.compute_angles();
     CGAL_HC_CHECK(eng.make_delaunay());
     eng.compute_curvature();
+    CGAL_HC_CHECK(eng.len.empty()); // (vertex scaling keeps no lengths: `length()` takes them from x)
     const std::vector<double> len = eng.len, angle = eng.angle, K = eng.K, x = eng.x;
     eng.release_derived();
     CGAL_HC_CHECK(eng.len.capacity() == 0 && eng.angle.capacity() == 0 && eng.K.capacity() == 0 && eng.x.capacity() == 0);

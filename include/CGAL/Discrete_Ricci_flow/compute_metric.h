@@ -26,7 +26,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -394,7 +393,7 @@ Initial_flips<Point_3> geometric_delaunay_flips(CGAL::Surface_mesh<Point_3>& m, 
   eng.compute_lengths();
   eng.compute_angles();
   if(!eng.make_delaunay()) throw_numerical_error("the geometric Delaunay flips of the input did not terminate");
-  for(auto e : m.edges()) len[e] = eng.len[e];
+  for(auto e : m.edges()) len[e] = eng.length(e);
   r.flips = eng.flip_log;
   if(!r.flips.empty()) { r.mesh_after = m; r.lambda_after = eng.edge_data; }
   return r;
@@ -458,15 +457,18 @@ bool write_input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& el
     back->compute_angles();
     for(auto it = init.flips.rbegin(); it != init.flips.rend(); ++it) back->flip(*it);
   }
-  // the lengths are kept here, keyed by the edge's vertex pair (the input has no multi-edge), and checked from
-  // here: `out` may be write-only (the uniformization functions pass a constant map, which reads back 0)
-  auto key = [&](auto h) {
-    std::uint64_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
-    if(a > b) std::swap(a, b);
-    return (a << 32) | b;
+  // the lengths are kept here, by vertex pair (the input has no multi-edge) in compressed rows: row a holds
+  // (b, l) for the edges a-b with a < b; they are checked from here: `out` may be write-only (the
+  // uniformization functions pass a constant map, which reads back 0)
+  auto ends = [&](auto h) {
+    const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
+    return std::make_pair((std::min)(a, b), (std::max)(a, b));
   };
-  std::vector<std::pair<std::uint64_t, double> > written;
-  written.reserve(edges(tm).size());
+  std::vector<std::size_t> row_start(vmap.size() + 1, 0);
+  for(auto e : edges(tm)) ++row_start[ends(halfedge(e, tm)).first + 1];
+  for(std::size_t i = 0; i < vmap.size(); ++i) row_start[i + 1] += row_start[i];
+  std::vector<std::pair<std::size_t, double> > written(row_start.back());
+  std::vector<std::size_t> row_end(row_start.begin(), row_start.end() - 1);
   for(auto e : edges(tm)) {
     const auto h = halfedge(e, tm);
     const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
@@ -480,14 +482,15 @@ bool write_input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& el
       const double penner0 = back ? back->edge_data[edge_in(*copy)] : 0.5 * (input_edge_length(tm, vpm, elm, e) / unit);
       l = length_from_lambda(eng.geo, std::exp(0.5 * (eng.u[a] + eng.u[b])) * penner0);
     } else
-      l = eng.len[edge_in(eng.m)]; // no flips for the circle packings: same connectivity
+      l = eng.length(edge_in(eng.m)); // no flips for the circle packings: same connectivity
     put(out, e, out_scale * l);
-    written.emplace_back(key(h), l); // (checked in the flow's unit)
+    const auto ab = ends(h);
+    written[row_end[ab.first]++] = std::make_pair(ab.second, l); // (checked in the flow's unit)
   }
-  std::sort(written.begin(), written.end());
   auto written_length = [&](auto h) {
-    const auto it = std::lower_bound(written.begin(), written.end(), std::make_pair(key(h), -HUGE_VAL));
-    return it != written.end() && it->first == key(h) ? it->second : 0.0;
+    const auto ab = ends(h);
+    for(std::size_t i = row_start[ab.first]; i < row_end[ab.first]; ++i) if(written[i].first == ab.second) return written[i].second;
+    return 0.0;
   };
   // checked even without flips: a flow that ends with degenerate triangles (status DEGENERATE_TRIANGLES, e.g.
   // with do_flip(false)) leaves lengths on the input connectivity that violate a triangle inequality
@@ -625,7 +628,7 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   // log(radius) (E^2) or absolute (H^2, S^2) for the circle packings
   const bool euclidean = geo == Background_geometry::EUCLIDEAN;
   const double out_scale = euclidean ? unit : 1.0;
-  for(auto e : m.edges()) lengths[e] = out_scale * eng.len[e];
+  for(auto e : m.edges()) lengths[e] = out_scale * eng.length(e);
   const bool valid = internal::write_input_lengths(tm, vpm, vim, elm, edge_length_out, eng, vmap, init, unit, out_scale);
   std::vector<double> u = eng.u;
   const double du = scheme == Scheme::VERTEX_SCALING ? (euclidean ? 0.0 : -std::log(unit)) : (euclidean ? std::log(unit) : 0.0);

@@ -167,7 +167,7 @@ std::vector<Cplx> layout_flat_disk(const Flow_engine<Point_3>& eng)
   std::vector<Cplx> pos(m.number_of_vertices());
   std::vector<char> placed_f(m.number_of_faces(), 0), placed_v(m.number_of_vertices(), 0);
   std::vector<Motion> place(m.number_of_faces(), Motion::identity(false));
-  auto chart = [&](F f) { const auto h = m.halfedge(f); return euclidean_chart(eng.len[m.edge(h)], eng.len[m.edge(m.next(h))], eng.len[m.edge(m.prev(h))]); };
+  auto chart = [&](F f) { const auto h = m.halfedge(f); return euclidean_chart(eng.length(m.edge(h)), eng.length(m.edge(m.next(h))), eng.length(m.edge(m.prev(h)))); };
   const F f0 = *m.faces().begin();
   placed_f[f0] = 1;
   std::deque<F> queue(1, f0);

@@ -65,8 +65,10 @@ public:
   // circle packings: inversive distance I of each edge.
   std::vector<double> edge_data;
   std::vector<double> u, target, len, K;
-  // vertex scaling: per edge, x_e = lambda0_e e^{(u_a + u_b) / 2} (= sinh, sin (l_e / 2), l_e / 2: the value
-  // behind len), cached with len by compute_lengths() and flip() so that the face functions take no exp
+  // vertex scaling: per edge, x_e = lambda0_e e^{(u_a + u_b) / 2} (= sinh, sin (l_e / 2), l_e / 2), cached by
+  // compute_lengths() and flip() so that the face functions take no exp. The lengths themselves are not cached
+  // (`len` stays empty): `length()` takes them from x, and the face functions need them only for faces close
+  // to degenerate (see `clearly_proper()`), which saves an asinh (asin) per edge and evaluation
   std::vector<double> x;
   std::vector<double> angle; // per halfedge: the corner angle opposite to it in its face (cache)
   std::vector<char> v_is_border, e_is_border;
@@ -83,8 +85,8 @@ public:
     : m(mesh), geo(g), scheme(s), use_flips(flips_on && s == Scheme::VERTEX_SCALING)
   {
     const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges();
-    u.assign(nv, 0.0); target.assign(nv, 0.0); K.assign(nv, 0.0); len.assign(ne, 0.0);
-    if(scheme == Scheme::VERTEX_SCALING) x.assign(ne, 0.0);
+    u.assign(nv, 0.0); target.assign(nv, 0.0); K.assign(nv, 0.0);
+    if(scheme == Scheme::VERTEX_SCALING) x.assign(ne, 0.0); else len.assign(ne, 0.0);
     edge_data.assign(ne, 0.0);
     v_is_border.assign(nv, 0); e_is_border.assign(ne, 0);
     for(E e : m.edges()) if(m.is_border(e)) {
@@ -102,19 +104,25 @@ public:
     return edge_data[e] * std::exp(0.5 * (u[m.vertex(e, 0)] + u[m.vertex(e, 1)]));
   }
 
-  // len (and, vertex scaling, x) of edge e from the current u and edge_data
+  // x (vertex scaling) or len (circle packings) of edge e from the current u and edge_data
   void update_length(E e)
   {
-    if(scheme == Scheme::VERTEX_SCALING) { x[e] = scaled_lambda(e); len[e] = length_from_lambda(geo, x[e]); return; }
+    if(scheme == Scheme::VERTEX_SCALING) { x[e] = scaled_lambda(e); return; }
     const V a = m.vertex(e, 0), b = m.vertex(e, 1);
     double d1, d2;
     len[e] = circle_packing_length(geo, radius_from_u(geo, u[a]), radius_from_u(geo, u[b]), edge_data[e], d1, d2);
   }
 
-  // the lengths (and x) at the current u: after every change of u, before the face functions
+  // the lengths (x) at the current u: after every change of u, before the face functions
   void compute_lengths()
   {
     for(E e : m.edges()) update_length(e);
+  }
+
+  // the length of edge e at the current u (after compute_lengths())
+  double length(E e) const
+  {
+    return scheme == Scheme::VERTEX_SCALING ? length_from_lambda(geo, x[e]) : len[e];
   }
 
   // d l_e / d u_v for v = the source (first) and target (second) of halfedge h
@@ -122,7 +130,7 @@ public:
   {
     const E e = m.edge(h);
     if(scheme == Scheme::VERTEX_SCALING) {
-      d_source = d_target = vertex_scaling_length_derivative(geo, len[e]);
+      d_source = d_target = vertex_scaling_length_derivative(geo, length(e));
       return;
     }
     const V a = m.source(h), b = m.target(h);
@@ -137,8 +145,30 @@ public:
   void face_data(H h0, H hs[3], V cs[3], double l[3]) const
   {
     hs[0] = h0; hs[1] = m.next(h0); hs[2] = m.next(hs[1]);
-    for(int i = 0; i < 3; ++i) { l[i] = len[m.edge(hs[i])]; cs[i] = m.target(hs[(i + 1) % 3]); }
+    for(int i = 0; i < 3; ++i) { l[i] = length(m.edge(hs[i])); cs[i] = m.target(hs[(i + 1) % 3]); }
   }
+
+  // the halfedges and corners of face_data(), without the lengths
+  void face_corners(H h0, H hs[3], V cs[3]) const
+  {
+    hs[0] = h0; hs[1] = m.next(h0); hs[2] = m.next(hs[1]);
+    for(int i = 0; i < 3; ++i) cs[i] = m.target(hs[(i + 1) % 3]);
+  }
+
+  // vertex scaling: whether the face with x and the Gram quantity Q of `algebraic_gram()` passes
+  // `triangle_is_proper()` without computing its lengths. Q is a positive multiple of
+  // sinh (sin, -) s sinh (s - l_0) sinh (s - l_1) sinh (s - l_2), s the half perimeter, so it vanishes when a
+  // triangle inequality (or, S^2, perimeter < 2 pi) is tight; a face that fails the test in floating point
+  // is within a few ulps of that, and its `properness_ratio()` is below about 1e-11 (a test samples
+  // near-degenerate triangles of all three backgrounds). Faces with a ratio above 1e-8 pass; the others are
+  // decided by their lengths, as before.
+  static double properness_ratio(const double xs[3], double Q)
+  {
+    const double hi = (std::max)(xs[0], (std::max)(xs[1], xs[2])), p = xs[0] * xs[1] * xs[2];
+    const double hi2 = hi * hi;
+    return Q / (hi2 * hi2 + 4 * p * p);
+  }
+  static bool clearly_proper(const double xs[3], double Q) { return properness_ratio(xs, Q) > 1e-8; }
 
   // recompute the cached angles of face f. Vertex scaling: from x = sinh, sin (l / 2), l / 2 (see
   // face_hessian()), theta_i = atan2(sqrt(Q), 2 num_i) with num_i = (x_j^2 + x_k^2 - x_i^2) / 2 + kappa x_j^2 x_k^2,
@@ -148,14 +178,22 @@ public:
   void update_face_angles(F f)
   {
     H hs[3]; V cs[3]; double l[3], th[3];
-    face_data(m.halfedge(f), hs, cs, l);
+    face_corners(m.halfedge(f), hs, cs);
     double x[3], c[3], Q = 0, num[3];
-    if(scheme == Scheme::VERTEX_SCALING && triangle_is_proper(l) && vertex_scaling_face(hs, x, c) &&
-       algebraic_gram(x, Q, num)) {
-      const double sq = std::sqrt(Q);
-      for(int i = 0; i < 3; ++i) angle[hs[i]] = std::atan2(sq, 2 * num[i]);
-      return;
-    }
+    if(scheme == Scheme::VERTEX_SCALING) {
+      const bool algebraic = vertex_scaling_face(hs, x, c) && algebraic_gram(x, Q, num);
+      bool proper = algebraic && clearly_proper(x, Q);
+      if(!proper) {
+        face_data(m.halfedge(f), hs, cs, l);
+        proper = triangle_is_proper(l);
+      }
+      if(algebraic && proper) {
+        const double sq = std::sqrt(Q);
+        for(int i = 0; i < 3; ++i) angle[hs[i]] = std::atan2(sq, 2 * num[i]);
+        return;
+      }
+    } else
+      face_data(m.halfedge(f), hs, cs, l);
     triangle_angles_only(geo, l, th);
     for(int i = 0; i < 3; ++i) angle[hs[i]] = th[i];
   }
@@ -243,8 +281,8 @@ public:
                  lad = edge_data[m.edge(o1)], ldb = edge_data[m.edge(o2)];
     if(geometric_flips) {
       // the diagonal c-d of the quad unfolded along a-b (lambda = l / 2 in E^2)
-      edge_data[e] = 0.5 * euclidean_flip_diagonal(len[e], len[m.edge(h1)], len[m.edge(h2)], len[m.edge(o1)],
-                                                   len[m.edge(o2)]);
+      edge_data[e] = 0.5 * euclidean_flip_diagonal(length(e), length(m.edge(h1)), length(m.edge(h2)),
+                                                   length(m.edge(o1)), length(m.edge(o2)));
     } else
       edge_data[e] = (lca * ldb + lad * lbc) / lab;
     flip_log.push_back(e);
@@ -274,7 +312,7 @@ public:
     return true;
   }
 
-  // The caches derived from (u, edge_data): lengths, x, corner angles, curvatures (more than half of the
+  // The caches derived from (u, edge_data): x (lengths), corner angles, curvatures (more than half of the
   // engine's memory: 15 doubles per vertex at 2.6M faces). A large factorization frees them (the factor needs
   // the memory) and `restore_derived()` recomputes them from the same state, with the functions of an evaluation.
   void release_derived()
@@ -284,8 +322,8 @@ public:
   }
   void restore_derived()
   {
-    len.assign(m.number_of_edges(), 0.0); angle.assign(m.number_of_halfedges(), 0.0); K.assign(m.number_of_vertices(), 0.0);
-    if(scheme == Scheme::VERTEX_SCALING) x.assign(m.number_of_edges(), 0.0);
+    angle.assign(m.number_of_halfedges(), 0.0); K.assign(m.number_of_vertices(), 0.0);
+    if(scheme == Scheme::VERTEX_SCALING) x.assign(m.number_of_edges(), 0.0); else len.assign(m.number_of_edges(), 0.0);
     compute_lengths();
     compute_angles();
     compute_curvature();
@@ -302,10 +340,17 @@ public:
   }
 
   // false if a length is zero, not finite, or (H^2) so long that cosh overflows in the angle formulas
+  // (vertex scaling H^2: 0 < 2 asinh(x) < 600, tested on x)
   bool lengths_are_usable() const
   {
-    const double limit = geo == Background_geometry::HYPERBOLIC ? 600.0 : HUGE_VAL;
-    for(E e : m.edges()) if(!(len[e] > 0 && len[e] < limit)) return false;
+    const bool hyperbolic = geo == Background_geometry::HYPERBOLIC;
+    if(scheme == Scheme::VERTEX_SCALING && hyperbolic) {
+      static const double x_limit = std::sinh(300.0);
+      for(E e : m.edges()) if(!(x[e] > 0 && x[e] < x_limit)) return false;
+      return true;
+    }
+    const double limit = hyperbolic ? 600.0 : HUGE_VAL;
+    for(E e : m.edges()) { const double l = length(e); if(!(l > 0 && l < limit)) return false; }
     return true;
   }
 
@@ -338,11 +383,20 @@ public:
   bool face_hessian(F f, H hs[3], V cs[3], double d[3][3]) const
   {
     double l[3], th[3], dth[3][3];
-    face_data(m.halfedge(f), hs, cs, l);
-    for(int i = 0; i < 3; ++i) {
-      th[i] = angle[hs[i]];
-      if(!(l[i] < l[(i + 1) % 3] + l[(i + 2) % 3])) return false;
-    }
+    face_corners(m.halfedge(f), hs, cs);
+    for(int i = 0; i < 3; ++i) th[i] = angle[hs[i]];
+    // the lengths only where needed: faces that are not clearly proper (their triangle inequalities) and the
+    // angle-formula fallback
+    bool have_lengths = false;
+    auto lengths = [&]() -> const double* {
+      if(!have_lengths) { face_data(m.halfedge(f), hs, cs, l); have_lengths = true; }
+      return l;
+    };
+    auto degenerate = [&]() {
+      const double* ll = lengths();
+      for(int i = 0; i < 3; ++i) if(!(ll[i] < ll[(i + 1) % 3] + ll[(i + 2) % 3])) return true;
+      return false;
+    };
     // dl[j][a]: d l_j / d u at corner a (source(h_j) = corner j+1, target(h_j) = corner j+2)
     double dl[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     if(scheme == Scheme::VERTEX_SCALING) {
@@ -359,6 +413,7 @@ public:
       // (c = 0) and H^2 lengths beyond about 200 (x^6 overflows) take the angle formulas.
       double x[3], c[3], g[3], Q = 0, num[3];
       const bool algebraic = vertex_scaling_face(hs, x, c) && algebraic_gram(x, Q, num);
+      if(!(algebraic && clearly_proper(x, Q)) && degenerate()) return false;
       for(int j = 0; j < 3; ++j) {
         g[j] = 2 * x[j] * c[j];
         const double d = c[j] > 0 ? x[j] / c[j] : 0.0;
@@ -375,8 +430,9 @@ public:
           dth[i][k] = -gi * num[j] / (x[k] * c[k] * x[i] * c[i]);
         }
       } else
-        triangle_angle_derivatives(geo, l, th, dth);
+        triangle_angle_derivatives(geo, lengths(), th, dth);
     } else {
+      if(degenerate()) return false;
       triangle_angle_derivatives(geo, l, th, dth);
       for(int j = 0; j < 3; ++j) {
         double ds, dt;
