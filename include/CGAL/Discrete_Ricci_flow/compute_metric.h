@@ -502,61 +502,15 @@ bool write_input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& el
   return true;
 }
 
-} // namespace internal
-
-/*!
-  \ingroup PkgDiscreteRicciFlowRef
-  Computes a metric of constant background curvature on `tm` with prescribed vertex curvatures, by Newton's
-  method on the convex discrete Ricci energy (thesis Algorithm 1).
-
-  \tparam TriangleMesh a model of `FaceListGraph` (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`), connected,
-          pure triangle, manifold; closed or with boundary.
-  \param tm the input mesh; its initial metric is given by the vertex positions or `input_edge_length_map`.
-  \param target_curvature a readable vertex property map (value convertible to `double`): the target Gaussian
-         curvature K_i (2 pi minus the cone angle) of interior vertices and the target geodesic curvature
-         (pi minus the boundary angle) of border vertices. Gauss-Bonnet is checked: sum = 2 pi chi in E^2,
-         sum > 2 pi chi in H^2 (the difference is the area), sum < 2 pi chi in S^2.
-  \param edge_length_out a writable edge property map of `tm` receiving the resulting edge lengths of the
-         input connectivity (see `Discrete_metric` when flips happened).
-  \param np optional named parameters:
-    - `background_geometry(g)` (default HYPERBOLIC), `scheme(s)` (default VERTEX_SCALING),
-      `input_edge_length_map(m)` (default: Euclidean lengths from `vertex_point_map`),
-    - `CGAL::parameters::vertex_point_map`, `vertex_index_map`,
-    - `number_of_iterations(n)`: maximum number of Newton iterations (default 100),
-    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians). Default: the status is CONVERGED once
-      the error is below 1e-11, and Newton then continues while each step at least halves the error (at
-      most 4 more steps): the flow ends at the rounding level of double arithmetic (about 1e-14 on the demo
-      meshes), which the embedding's relator needs. With an explicit accuracy the flow stops at it.
-    - `do_flip(b)`: keep the triangulation intrinsically Delaunay with Ptolemy flips (default true; vertex
-      scaling only),
-    - `geometric_initial_flips(b)`: first make the input intrinsically Delaunay by metric-preserving flips
-      (default false; see `parameters::geometric_initial_flips()`; automatic when the input has a degenerate,
-      zero-area face: such faces are removed by these flips without changing the metric),
-    - `sparse_solver(s)`: see `Sparse_solver` (default CHOLMOD when available),
-    - `reuse_factorization(b)`: inexact Newton with an earlier factorization as preconditioner (default true,
-      see below; the convergence test and the polishing are the same),
-    - `verbose(b)`: one line per iteration on `std::cerr`,
-    - `callback(f)`: `f(const Flow_progress&)` after each iteration; return `false` to stop (status CANCELLED).
-  \returns the result (status, statistics, intrinsic triangulation, conformal factors).
-  \throws CGAL::Invalid_mesh_error, CGAL::Invalid_metric_error, CGAL::Invalid_option_error,
-          CGAL::Invalid_input_error on invalid input (see `Ricci_flow_error`). Non-convergence is not an
-          exception: the status says it, the metric is the last accepted iterate (finite lengths).
-
-  Cost: the Hessian (its lower triangle) is assembled in place into a sparsity pattern that is rebuilt only
-  when flips change the connectivity. The Newton systems are solved by inexact Newton: conjugate gradients
-  preconditioned by the sparse Cholesky factorization of an earlier Newton step (CHOLMOD supernodal or Eigen's
-  `SimplicialLDLT`) to the relative residual min(0.1, max(error, 1e-8)), which keeps the convergence
-  quadratic; a new factorization (symbolic analysis reused, both solvers keeping their first fill-reducing ordering)
-  only when they do not converge within a budget of a fraction of a factorization's cost, or when the line
-  search rejects their direction. `reuse_factorization(false)` factorizes at every step. On the demo meshes 3
-  to 10 Newton iterations with 2 to 4 factorizations; O(F) per iteration for the rest.
-*/
-template <class TriangleMesh, class VertexTargetMap, class EdgeLengthOutMap,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
+/// `compute_metric()` on a mesh that `check_triangle_mesh()` (with the vertex index map of `np`) has accepted,
+/// of topology `topo` (the uniformization functions check the mesh once, with their own messages); the
+/// statistics' time counts from `t_start` (before the checks)
+template <class TriangleMesh, class VertexTargetMap, class EdgeLengthOutMap, class NamedParameters>
 Discrete_metric<typename boost::property_traits<
   typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>
-compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLengthOutMap edge_length_out,
-               const NamedParameters& np = CGAL::parameters::default_values())
+compute_metric_checked(const TriangleMesh& tm, const Mesh_topology& topo, VertexTargetMap target_curvature,
+                       EdgeLengthOutMap edge_length_out, const NamedParameters& np,
+                       std::chrono::steady_clock::time_point t_start)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -565,10 +519,8 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   typedef Discrete_metric<Point_3> Result;
   typedef typename Result::Mesh Mesh;
 
-  const auto t_start = std::chrono::steady_clock::now();
   VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const internal::Mesh_topology topo = internal::check_triangle_mesh(tm, vim);
   const Background_geometry geo = internal::get_background(np, Background_geometry::HYPERBOLIC);
   const Scheme scheme = choose_parameter(get_parameter(np, CGAL::internal_np::ricci_scheme_t_v), Scheme::VERTEX_SCALING);
   const bool do_flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
@@ -642,6 +594,67 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
   return res;
 }
 
+} // namespace internal
+
+/*!
+  \ingroup PkgDiscreteRicciFlowRef
+  Computes a metric of constant background curvature on `tm` with prescribed vertex curvatures, by Newton's
+  method on the convex discrete Ricci energy (thesis Algorithm 1).
+
+  \tparam TriangleMesh a model of `FaceListGraph` (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`), connected,
+          pure triangle, manifold; closed or with boundary.
+  \param tm the input mesh; its initial metric is given by the vertex positions or `input_edge_length_map`.
+  \param target_curvature a readable vertex property map (value convertible to `double`): the target Gaussian
+         curvature K_i (2 pi minus the cone angle) of interior vertices and the target geodesic curvature
+         (pi minus the boundary angle) of border vertices. Gauss-Bonnet is checked: sum = 2 pi chi in E^2,
+         sum > 2 pi chi in H^2 (the difference is the area), sum < 2 pi chi in S^2.
+  \param edge_length_out a writable edge property map of `tm` receiving the resulting edge lengths of the
+         input connectivity (see `Discrete_metric` when flips happened).
+  \param np optional named parameters:
+    - `background_geometry(g)` (default HYPERBOLIC), `scheme(s)` (default VERTEX_SCALING),
+      `input_edge_length_map(m)` (default: Euclidean lengths from `vertex_point_map`),
+    - `CGAL::parameters::vertex_point_map`, `vertex_index_map`,
+    - `number_of_iterations(n)`: maximum number of Newton iterations (default 100),
+    - `accuracy(eps)`: stop when max |K_i - target_i| < eps (radians). Default: the status is CONVERGED once
+      the error is below 1e-11, and Newton then continues while each step at least halves the error (at
+      most 4 more steps): the flow ends at the rounding level of double arithmetic (about 1e-14 on the demo
+      meshes), which the embedding's relator needs. With an explicit accuracy the flow stops at it.
+    - `do_flip(b)`: keep the triangulation intrinsically Delaunay with Ptolemy flips (default true; vertex
+      scaling only),
+    - `geometric_initial_flips(b)`: first make the input intrinsically Delaunay by metric-preserving flips
+      (default false; see `parameters::geometric_initial_flips()`; automatic when the input has a degenerate,
+      zero-area face: such faces are removed by these flips without changing the metric),
+    - `sparse_solver(s)`: see `Sparse_solver` (default CHOLMOD when available),
+    - `reuse_factorization(b)`: inexact Newton with an earlier factorization as preconditioner (default true,
+      see below; the convergence test and the polishing are the same),
+    - `verbose(b)`: one line per iteration on `std::cerr`,
+    - `callback(f)`: `f(const Flow_progress&)` after each iteration; return `false` to stop (status CANCELLED).
+  \returns the result (status, statistics, intrinsic triangulation, conformal factors).
+  \throws CGAL::Invalid_mesh_error, CGAL::Invalid_metric_error, CGAL::Invalid_option_error,
+          CGAL::Invalid_input_error on invalid input (see `Ricci_flow_error`). Non-convergence is not an
+          exception: the status says it, the metric is the last accepted iterate (finite lengths).
+
+  Cost: the Hessian (its lower triangle) is assembled in place into a sparsity pattern that is rebuilt only
+  when flips change the connectivity. The Newton systems are solved by inexact Newton: conjugate gradients
+  preconditioned by the sparse Cholesky factorization of an earlier Newton step (CHOLMOD supernodal or Eigen's
+  `SimplicialLDLT`) to the relative residual min(0.1, max(error, 1e-8)), which keeps the convergence
+  quadratic; a new factorization (symbolic analysis reused, both solvers keeping their first fill-reducing ordering)
+  only when they do not converge within a budget of a fraction of a factorization's cost, or when the line
+  search rejects their direction. `reuse_factorization(false)` factorizes at every step. On the demo meshes 3
+  to 10 Newton iterations with 2 to 4 factorizations; O(F) per iteration for the rest.
+*/
+template <class TriangleMesh, class VertexTargetMap, class EdgeLengthOutMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Discrete_metric<typename boost::property_traits<
+  typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>
+compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLengthOutMap edge_length_out,
+               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto t_start = std::chrono::steady_clock::now();
+  const internal::Mesh_topology topo = internal::check_triangle_mesh(tm, CGAL::get_initialized_vertex_index_map(tm, np));
+  return internal::compute_metric_checked(tm, topo, target_curvature, edge_length_out, np, t_start);
+}
+
 /*!
   \ingroup PkgDiscreteRicciFlowRef
   Hyperbolic uniformization of a closed surface of genus g >= 2: the metric of curvature -1 (target K_i = 0
@@ -654,13 +667,16 @@ compute_metric(const TriangleMesh& tm, VertexTargetMap target_curvature, EdgeLen
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto hyperbolic_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::check_closed_surface(tm, "hyperbolic uniformization", "genus >= 2", [](long g) { return g >= 2; });
+  const auto t_start = std::chrono::steady_clock::now();
+  const internal::Mesh_topology topo = internal::check_closed_surface(
+    tm, CGAL::get_initialized_vertex_index_map(tm, np), "hyperbolic uniformization", "genus >= 2", [](long g) { return g >= 2; });
   if(internal::get_background(np, Background_geometry::HYPERBOLIC) != Background_geometry::HYPERBOLIC)
     internal::throw_option_error("hyperbolic uniformization uses the hyperbolic background");
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor tm_edge;
-  return compute_metric(tm, CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>(0.0),
-                        CGAL::Constant_property_map<tm_edge, double>(0.0),
-                        parameters::background_geometry(Background_geometry::HYPERBOLIC, np));
+  return internal::compute_metric_checked(
+    tm, topo, CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>(0.0),
+    CGAL::Constant_property_map<tm_edge, double>(0.0), parameters::background_geometry(Background_geometry::HYPERBOLIC, np),
+    t_start);
 }
 
 /*!
@@ -671,11 +687,14 @@ auto hyperbolic_uniformization(const TriangleMesh& tm, const NamedParameters& np
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto flat_metric(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::check_closed_surface(tm, "the flat torus metric", "genus 1", [](long g) { return g == 1; });
+  const auto t_start = std::chrono::steady_clock::now();
+  const internal::Mesh_topology topo = internal::check_closed_surface(
+    tm, CGAL::get_initialized_vertex_index_map(tm, np), "the flat torus metric", "genus 1", [](long g) { return g == 1; });
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor tm_edge;
-  return compute_metric(tm, CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>(0.0),
-                        CGAL::Constant_property_map<tm_edge, double>(0.0),
-                        parameters::background_geometry(Background_geometry::EUCLIDEAN, np));
+  return internal::compute_metric_checked(
+    tm, topo, CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>(0.0),
+    CGAL::Constant_property_map<tm_edge, double>(0.0), parameters::background_geometry(Background_geometry::EUCLIDEAN, np),
+    t_start);
 }
 
 } // namespace Discrete_Ricci_flow

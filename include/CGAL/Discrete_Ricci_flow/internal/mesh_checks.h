@@ -144,11 +144,11 @@ Mesh_topology check_triangle_mesh(const TriangleMesh& tm)
 
 /// checks for the closed-surface entry points: a valid mesh (see above), closed, of a genus accepted by
 /// `genus_ok`; `what` names the entry point and `needs` the accepted genus in the messages
-template <class TriangleMesh, class GenusOk>
-Mesh_topology check_closed_surface(const TriangleMesh& tm, const std::string& what, const std::string& needs,
-                                   GenusOk genus_ok)
+template <class TriangleMesh, class VertexIndexMap, class GenusOk>
+Mesh_topology check_closed_surface(const TriangleMesh& tm, VertexIndexMap vim, const std::string& what,
+                                   const std::string& needs, GenusOk genus_ok)
 {
-  const Mesh_topology t = check_triangle_mesh(tm);
+  const Mesh_topology t = check_triangle_mesh(tm, vim);
   if(!t.closed()) {
     std::ostringstream os;
     os << what << " needs a closed surface (this mesh has " << t.boundary_loops << " boundary loop"
@@ -161,6 +161,14 @@ Mesh_topology check_closed_surface(const TriangleMesh& tm, const std::string& wh
     throw_mesh_error(os.str());
   }
   return t;
+}
+
+/// the same with the mesh's own (or an initialized) vertex index map
+template <class TriangleMesh, class GenusOk>
+Mesh_topology check_closed_surface(const TriangleMesh& tm, const std::string& what, const std::string& needs,
+                                   GenusOk genus_ok)
+{
+  return check_closed_surface(tm, CGAL::get_initialized_vertex_index_map(tm), what, needs, genus_ok);
 }
 
 } // namespace internal
