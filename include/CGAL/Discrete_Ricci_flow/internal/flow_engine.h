@@ -159,8 +159,9 @@ public:
   // `triangle_is_proper()` without computing its lengths. Q is a positive multiple of
   // sinh (sin, -) s sinh (s - l_0) sinh (s - l_1) sinh (s - l_2), s the half perimeter, so it vanishes when a
   // triangle inequality (or, S^2, perimeter < 2 pi) is tight; a face that fails the test in floating point
-  // is within a few ulps of that, and its `properness_ratio()` is below about 1e-11 (a test samples
-  // near-degenerate triangles of all three backgrounds). Faces with a ratio above 1e-8 pass; the others are
+  // is within a few ulps of that, so its `properness_ratio()` is tiny: at most about 1e-11 by the rounding of
+  // its lengths, at most 1.4e-14 measured (test `clearly_proper_faces_pass_the_length_test`, 600k
+  // near-degenerate triangles of the three backgrounds). Faces with a ratio above 1e-8 pass; the others are
   // decided by their lengths, as before.
   static double properness_ratio(const double xs[3], double Q)
   {
