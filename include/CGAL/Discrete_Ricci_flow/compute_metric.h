@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
 
@@ -457,18 +458,9 @@ bool write_input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& el
     back->compute_angles();
     for(auto it = init.flips.rbegin(); it != init.flips.rend(); ++it) back->flip(*it);
   }
-  // the lengths are kept here, by vertex pair (the input has no multi-edge) in compressed rows: row a holds
-  // (b, l) for the edges a-b with a < b; they are checked from here: `out` may be write-only (the
-  // uniformization functions pass a constant map, which reads back 0)
-  auto ends = [&](auto h) {
-    const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
-    return std::make_pair((std::min)(a, b), (std::max)(a, b));
-  };
-  std::vector<std::size_t> row_start(vmap.size() + 1, 0);
-  for(auto e : edges(tm)) ++row_start[ends(halfedge(e, tm)).first + 1];
-  for(std::size_t i = 0; i < vmap.size(); ++i) row_start[i + 1] += row_start[i];
-  std::vector<std::pair<std::size_t, double> > written(row_start.back());
-  std::vector<std::size_t> row_end(row_start.begin(), row_start.end() - 1);
+  // the lengths are kept here (CGAL's dynamic edge property of tm: an array for Surface_mesh) and checked from
+  // here: `out` may be write-only (the uniformization functions pass a constant map, which reads back 0)
+  auto written = get(CGAL::dynamic_edge_property_t<double>(), tm);
   for(auto e : edges(tm)) {
     const auto h = halfedge(e, tm);
     const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
@@ -484,19 +476,13 @@ bool write_input_lengths(const TriangleMesh& tm, VPM vpm, VIM vim, const ELM& el
     } else
       l = eng.length(edge_in(eng.m)); // no flips for the circle packings: same connectivity
     put(out, e, out_scale * l);
-    const auto ab = ends(h);
-    written[row_end[ab.first]++] = std::make_pair(ab.second, l); // (checked in the flow's unit)
+    put(written, e, l); // (checked in the flow's unit)
   }
-  auto written_length = [&](auto h) {
-    const auto ab = ends(h);
-    for(std::size_t i = row_start[ab.first]; i < row_end[ab.first]; ++i) if(written[i].first == ab.second) return written[i].second;
-    return 0.0;
-  };
   // checked even without flips: a flow that ends with degenerate triangles (status DEGENERATE_TRIANGLES, e.g.
   // with do_flip(false)) leaves lengths on the input connectivity that violate a triangle inequality
   for(auto f : faces(tm)) {
     double l[3] = {0, 0, 0}; int i = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { if(i >= 3) break; l[i++] = written_length(h); }
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { if(i >= 3) break; l[i++] = get(written, edge(h, tm)); }
     for(int k = 0; k < 3; ++k) if(!(l[k] < l[(k + 1) % 3] + l[(k + 2) % 3])) return false;
   }
   return true;
