@@ -114,6 +114,61 @@ CGAL_HC_TEST_CASE(zero_area_face_is_flipped_away)
             << " iterations, tau = " << tau << std::endl;
 }
 
+// a user's vertex_index_map is checked before anything depends on it (a repeated index would merge vertices
+// in the component count), by every entry point; a valid permutation gives the same conformal factors
+CGAL_HC_TEST_CASE(vertex_index_map_is_checked)
+{
+  const Mesh m = read("eight.off");
+  const std::size_t n = m.number_of_vertices();
+  std::vector<std::size_t> perm(n), repeated(n), out_of_range(n);
+  for(std::size_t i = 0; i < n; ++i) { perm[i] = n - 1 - i; repeated[i] = i; out_of_range[i] = i; }
+  repeated[5] = 7;         // two vertices with index 7, none with 5
+  out_of_range[3] = n + 2; // beyond 0 .. n-1
+  auto as_map = [](const std::vector<std::size_t>& v) { return CGAL::make_property_map(v); };
+  auto expect_invalid_map = [&](auto f, const std::string& what) {
+    std::string msg = "no exception";
+    try { f(); } catch(const CGAL::Invalid_option_error& e) { msg = e.what(); } catch(const std::exception& e) { msg = std::string("other: ") + e.what(); }
+    CGAL_HC_CHECK_MSG(msg.find("invalid vertex index map") != std::string::npos, what << ": " << msg);
+  };
+  for(const auto* bad : {&repeated, &out_of_range}) {
+    expect_invalid_map([&] { RF::hyperbolic_uniformization(m, CGAL::parameters::vertex_index_map(as_map(*bad))); },
+                       "hyperbolic_uniformization");
+    expect_invalid_map([&] {
+      std::vector<double> l(m.number_of_edges());
+      RF::compute_metric(m, CGAL::Constant_property_map<Mesh::Vertex_index, double>(0.0), CGAL::make_property_map(l),
+                         CGAL::parameters::vertex_index_map(as_map(*bad)));
+    }, "compute_metric");
+    const Mesh torus = read("hole.off"); // genus 1 (demo data)
+    std::vector<std::size_t> bad_t(torus.number_of_vertices());
+    for(std::size_t i = 0; i < bad_t.size(); ++i) bad_t[i] = i;
+    bad_t[1] = bad == &repeated ? 0 : bad_t.size();
+    expect_invalid_map([&] { RF::flat_metric(torus, CGAL::parameters::vertex_index_map(as_map(bad_t))); }, "flat_metric");
+    const Mesh sphere = read("sphere.off");
+    std::vector<std::size_t> bad_s(sphere.number_of_vertices());
+    for(std::size_t i = 0; i < bad_s.size(); ++i) bad_s[i] = i;
+    bad_s[1] = bad == &repeated ? 0 : bad_s.size();
+    expect_invalid_map([&] { RF::spherical_uniformization(sphere, CGAL::parameters::vertex_index_map(as_map(bad_s))); },
+                       "spherical_uniformization");
+  }
+  // every position of a repeated index (the old check counted "2 connected components" when the repeated
+  // index was the union-find root: at vertex 312 of eight.off)
+  std::size_t wrong = 0;
+  for(std::size_t k = 0; k < n; ++k) {
+    std::vector<std::size_t> r(n);
+    for(std::size_t i = 0; i < n; ++i) r[i] = i;
+    r[k] = (k + 2) % n;
+    try { RF::hyperbolic_uniformization(m, CGAL::parameters::vertex_index_map(as_map(r))); ++wrong; }
+    catch(const CGAL::Invalid_option_error&) {} catch(const std::exception&) { ++wrong; }
+  }
+  CGAL_HC_CHECK_MSG(wrong == 0, wrong << " repeated indices not reported as an invalid vertex index map");
+  const auto ref = RF::hyperbolic_uniformization(m);
+  const auto permuted = RF::hyperbolic_uniformization(m, CGAL::parameters::vertex_index_map(as_map(perm)));
+  CGAL_HC_CHECK(ref.converged() && permuted.converged());
+  double d = 0;
+  for(std::size_t i = 0; i < n; ++i) d = (std::max)(d, std::abs(ref.conformal_factors()[i] - permuted.conformal_factors()[perm[i]]));
+  CGAL_HC_CHECK_MSG(d < 1e-9, "conformal factors under a permuted vertex index map differ by " << d);
+}
+
 CGAL_HC_TEST_CASE(options_out_of_range)
 {
   const Mesh m = read("eight.off");

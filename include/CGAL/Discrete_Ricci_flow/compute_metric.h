@@ -264,7 +264,7 @@ void copy_connectivity(const TriangleMesh& tm, VPM vpm, VIM vim, Mesh& m, std::v
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> by_index(nv);
   for(auto v : vertices(tm)) {
     const std::size_t i = get(vim, v);
-    if(i >= nv || used[i]) throw_option_error("invalid vertex index map");
+    if(i >= nv || used[i]) throw_option_error("invalid vertex index map (not one to one onto 0 .. n-1)");
     used[i] = 1; by_index[i] = v;
   }
   m.reserve(typename Mesh::size_type(nv), typename Mesh::size_type(edges(tm).size()), typename Mesh::size_type(faces(tm).size()));

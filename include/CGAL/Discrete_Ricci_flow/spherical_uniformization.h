@@ -436,9 +436,9 @@ spherical_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGA
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   typedef typename Mesh::Vertex_index V;
   const auto t0 = std::chrono::steady_clock::now();
-  internal::check_closed_surface(tm, "spherical uniformization", "genus 0", [](long g) { return g == 0; });
-  VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  internal::check_closed_surface(tm, vim, "spherical uniformization", "genus 0", [](long g) { return g == 0; });
+  VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   internal::Newton_options o = internal::newton_options(np);
   Mesh m;
   std::vector<V> vmap;

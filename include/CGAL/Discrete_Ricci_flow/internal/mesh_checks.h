@@ -53,20 +53,22 @@ struct Mesh_topology
   bool closed() const { return boundary_loops == 0; }
 };
 
-/// components (through the edges), boundary loops, chi and genus of a FaceGraph; `vim` maps the vertices to
-/// 0 .. n-1
+/// components (through the edges), boundary loops, chi and genus of a FaceGraph; `vim` must map the vertices
+/// one to one onto 0 .. n-1 (`CGAL::Invalid_option_error` otherwise: the components would be miscounted)
 template <class FaceGraph, class VertexIndexMap>
 Mesh_topology mesh_topology(const FaceGraph& g, VertexIndexMap vim)
 {
   typedef typename boost::graph_traits<FaceGraph>::halfedge_descriptor halfedge_descriptor;
   Mesh_topology t;
   const std::size_t nv = vertices(g).size();
-  Union_find uf(nv);
-  for(auto e : edges(g)) {
-    const std::size_t a = get(vim, source(e, g)), b = get(vim, target(e, g));
-    if(a >= nv || b >= nv) throw_option_error("invalid vertex index map");
-    uf.unite(a, b);
+  std::vector<char> used(nv, 0);
+  for(auto v : vertices(g)) {
+    const std::size_t i = get(vim, v);
+    if(i >= nv || used[i]) throw_option_error("invalid vertex index map (not one to one onto 0 .. n-1)");
+    used[i] = 1;
   }
+  Union_find uf(nv);
+  for(auto e : edges(g)) uf.unite(get(vim, source(e, g)), get(vim, target(e, g)));
   for(auto v : vertices(g)) if(uf.find(get(vim, v)) == get(vim, v)) ++t.components;
   const auto him = CGAL::get_initialized_halfedge_index_map(g);
   std::vector<char> seen(halfedges(g).size(), 0);
@@ -135,13 +137,6 @@ Mesh_topology check_triangle_mesh(const TriangleMesh& tm, VertexIndexMap vim)
   return topo;
 }
 
-/// the same with the mesh's own (or an initialized) vertex index map
-template <class TriangleMesh>
-Mesh_topology check_triangle_mesh(const TriangleMesh& tm)
-{
-  return check_triangle_mesh(tm, CGAL::get_initialized_vertex_index_map(tm));
-}
-
 /// checks for the closed-surface entry points: a valid mesh (see above), closed, of a genus accepted by
 /// `genus_ok`; `what` names the entry point and `needs` the accepted genus in the messages
 template <class TriangleMesh, class VertexIndexMap, class GenusOk>
@@ -161,14 +156,6 @@ Mesh_topology check_closed_surface(const TriangleMesh& tm, VertexIndexMap vim, c
     throw_mesh_error(os.str());
   }
   return t;
-}
-
-/// the same with the mesh's own (or an initialized) vertex index map
-template <class TriangleMesh, class GenusOk>
-Mesh_topology check_closed_surface(const TriangleMesh& tm, const std::string& what, const std::string& needs,
-                                   GenusOk genus_ok)
-{
-  return check_closed_surface(tm, CGAL::get_initialized_vertex_index_map(tm), what, needs, genus_ok);
 }
 
 } // namespace internal
