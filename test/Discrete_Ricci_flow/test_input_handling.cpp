@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Discrete_Ricci_flow.h>
 
 #include "cgal_hc_test.h"
@@ -161,6 +162,15 @@ CGAL_HC_TEST_CASE(vertex_index_map_is_checked)
     catch(const CGAL::Invalid_option_error&) {} catch(const std::exception&) { ++wrong; }
   }
   CGAL_HC_CHECK_MSG(wrong == 0, wrong << " repeated indices not reported as an invalid vertex index map");
+  // a Surface_mesh with a removed vertex (its indices are no longer 0 .. n-1): the message says what to do
+  Mesh g = m;
+  CGAL::Euler::remove_center_vertex(g.halfedge(*g.vertices().begin()), g); // (leaves a polygon face and garbage)
+  std::string msg = "no exception";
+  try { RF::hyperbolic_uniformization(g); } catch(const std::exception& e) { msg = e.what(); }
+  CGAL_HC_CHECK_MSG(msg.find("collect_garbage") != std::string::npos, msg);
+  g.collect_garbage();
+  CGAL_HC_CHECK_MSG(message_of([&] { RF::hyperbolic_uniformization(g); }).find("triangulate") != std::string::npos,
+                    "after collect_garbage(): " << message_of([&] { RF::hyperbolic_uniformization(g); }));
   const auto ref = RF::hyperbolic_uniformization(m);
   const auto permuted = RF::hyperbolic_uniformization(m, CGAL::parameters::vertex_index_map(as_map(perm)));
   CGAL_HC_CHECK(ref.converged() && permuted.converged());

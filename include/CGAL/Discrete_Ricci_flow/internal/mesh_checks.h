@@ -64,7 +64,9 @@ Mesh_topology mesh_topology(const FaceGraph& g, VertexIndexMap vim)
   std::vector<char> used(nv, 0);
   for(auto v : vertices(g)) {
     const std::size_t i = get(vim, v);
-    if(i >= nv || used[i]) throw_option_error("invalid vertex index map (not one to one onto 0 .. n-1)");
+    if(i >= nv || used[i])
+      throw_option_error("invalid vertex index map (not one to one onto 0 .. n-1; a Surface_mesh with removed "
+                         "elements needs collect_garbage() first)");
     used[i] = 1;
   }
   Union_find uf(nv);
