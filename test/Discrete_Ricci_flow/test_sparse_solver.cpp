@@ -327,9 +327,11 @@ CGAL_HC_TEST_CASE(polishing_factorizes_only_above_1e_12)
                         << sd.error_history[n - 1 - p + j]);
     polished += p;
     // the CG budget of SimplicialLDLT assumes a factorization twice (not 4 times, as CHOLMOD's) as fast per flop
-    // as a solve: elephant Loop x1 (22k faces) makes 3 factorizations (5 with the budget of CHOLMOD)
+    // as a solve: elephant Loop x1 (22k faces) made 3 factorizations in 9 + 1 iterations (5 with the budget of
+    // CHOLMOD); since the line search no longer accepts an estimated energy increase (2026-12-07, later) it
+    // makes 4 in 7 + 1 iterations, in the same time
     if(k == elephant_loop1 && s == RF::Sparse_solver::SIMPLICIAL_LDLT)
-      CGAL_HC_CHECK_MSG(sd.number_of_factorizations <= 3, sd.number_of_factorizations << " factorizations");
+      CGAL_HC_CHECK_MSG(sd.number_of_factorizations <= 4, sd.number_of_factorizations << " factorizations");
   }
   CGAL_HC_CHECK(polished > 0); // some polishing step was taken
 }

@@ -153,6 +153,9 @@ struct Flow_statistics
   double first_factorization_seconds = 0;    ///< time of the first analyzePattern + factorize + solve
   Sparse_solver solver_used = Sparse_solver::SIMPLICIAL_LDLT; ///< the solver of the last Newton system
   std::size_t number_of_solver_fallbacks = 0; ///< iterations that fell back to SimplicialLDLT (indefinite)
+  /// factorizations of H + mu I (Levenberg-Marquardt) for a singular Hessian of a convex energy (E^2, H^2:
+  /// an interior vertex whose triangles are all degenerate)
+  std::size_t number_of_shifted_factorizations = 0;
   /// conjugate-gradient iterations on Newton systems preconditioned by an earlier factorization (each costs
   /// one solve with the factor and one product with the Hessian)
   std::size_t number_of_cg_iterations = 0;

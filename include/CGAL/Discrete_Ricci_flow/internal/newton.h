@@ -366,7 +366,7 @@ private:
   // Inexact Newton (Dembo-Eisenstat-Steihaug): the relative residual of the direction is at most
   // eta = min(0.1, max(err, 1e-8)), which keeps the convergence quadratic (the residual is of the order of the
   // quadratic term) down to the rounding level; `fresh` forces a new factorization.
-  bool direction(double err, bool fresh, bool may_factorize = true)
+  bool direction(double err, bool fresh, bool may_factorize = true, double min_shift = 0)
   {
     const auto t0 = std::chrono::steady_clock::now();
     eng_.hessian_lower(H_, o_.fixed);
@@ -400,14 +400,44 @@ private:
     // freed meanwhile and recomputed after (at 2.6M faces: 103 MB, for about one evaluation's time)
     const bool release = std::size_t(n_) >= o_.release_caches_from;
     if(release) eng_.release_derived();
-    bool ok = chol_.factorize(H_, eng_.pattern_version, st_);
-    if(ok) { right_hand_side(delta_); ok = chol_.solve_in_place(delta_); }
+    bool ok = factorize_and_solve(min_shift);
     if(release) eng_.restore_derived();
     st_.solver_used = chol_.used();
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
     if(st_.first_factorization_seconds == 0) st_.first_factorization_seconds = dt;
     st_.factorization_seconds += dt;
     return ok;
+  }
+
+  // whether the energy is convex (E^2, H^2: its Hessian is positive semi-definite; the S^2 energy is not)
+  bool convex() const { return eng_.geo != Background_geometry::SPHERICAL; }
+
+  // factorizes H_ and solves the Newton system into delta_. A convex energy whose Hessian is singular (an
+  // interior vertex all of whose triangles are degenerate, Luo's extension: e.g. a disk flow whose boundary
+  // triangle must degenerate) gets the factorization of H + mu I instead (Levenberg-Marquardt): mu from
+  // max(1e-10 mean |H_ii|, min_shift), times 1000 until positive definite (`shift_` receives it, 0 without);
+  // before, the flow ended with NUMERICAL_FAILURE
+  bool factorize_and_solve(double min_shift)
+  {
+    shift_ = 0;
+    bool ok = false;
+    if(min_shift == 0) {
+      ok = chol_.factorize(H_, eng_.pattern_version, st_);
+      if(ok) { right_hand_side(delta_); ok = chol_.solve_in_place(delta_); }
+      if((ok && chol_.positive_definite()) || !convex()) return ok;
+    }
+    double mean_diag = 0;
+    for(int j = 0; j < n_; ++j) mean_diag += std::abs(H_.valuePtr()[H_.outerIndexPtr()[j]]); // (first of its column)
+    mean_diag = (std::max)(mean_diag / double((std::max)(n_, 1)), 1e-300);
+    double applied = 0;
+    for(double mu = (std::max)(1e-10 * mean_diag, min_shift); mu <= 10 * mean_diag; mu *= 1e3) {
+      for(int j = 0; j < n_; ++j) if(!o_.fixed[j]) H_.valuePtr()[H_.outerIndexPtr()[j]] += mu - applied;
+      applied = mu;
+      ok = chol_.factorize(H_, eng_.pattern_version, st_);
+      if(ok) { right_hand_side(delta_); ok = chol_.solve_in_place(delta_); }
+      if(ok && chol_.positive_definite()) { shift_ = mu; ++st_.number_of_shifted_factorizations; return true; }
+    }
+    return false;
   }
 
   // the right-hand side of the Newton system, -g (0 at fixed vertices), into b
@@ -463,7 +493,14 @@ private:
     if(from_cg_ && !strict && st_.status == Flow_status::LINE_SEARCH_FAILED) {
       st_.status = Flow_status::MAXIMUM_ITERATIONS;
       if(!direction(err, true)) { st_.status = Flow_status::NUMERICAL_FAILURE; return false; }
-      return line_search(err, t, strict);
+      if(line_search(err, t, strict)) return true;
+    }
+    // a shifted (Levenberg-Marquardt) direction that the line search rejects: the Hessian missed the
+    // curvature of the degenerate triangles, which grows fast as they open; a larger shift (shorter step)
+    while(shift_ > 0 && !strict && st_.status == Flow_status::LINE_SEARCH_FAILED) {
+      st_.status = Flow_status::MAXIMUM_ITERATIONS;
+      if(!direction(err, true, true, 1e3 * shift_)) { st_.status = Flow_status::LINE_SEARCH_FAILED; return false; }
+      if(line_search(err, t, strict)) return true;
     }
     return false;
   }
@@ -482,7 +519,10 @@ private:
     for(int i = 0; i < n_; ++i) dmax = (std::max)(dmax, std::abs(delta_[i]));
     t = dmax > o_.max_step ? o_.max_step / dmax : 1.0;
     // accept t when the energy decreases (trapezoidal estimate from the directional derivatives; the energy
-    // is convex for E^2 / H^2) or the max error decreases
+    // is convex for E^2 / H^2) or the max error decreases, the latter for a convex energy only where the
+    // estimate does not say that the energy grew: steps accepted for their max error alone made flows of
+    // meshes with very thin triangles cycle (joint.off stretched 1000 times along x: the same 10 iterates
+    // again and again, MAXIMUM_ITERATIONS)
     while(t > 1e-12) {
       for(int i = 0; i < n_; ++i) eng_.u[i] = u_old_[i] + t * delta_[i];
       double e2 = 0;
@@ -492,7 +532,8 @@ private:
         for(int i = 0; i < n_; ++i) slope_t += g_[i] * delta_[i];
         const double de = 0.5 * t * (slope0 + slope_t);
         const bool ok = strict ? e2 < err_old
-                               : ((slope0 < 0 && de <= 1e-4 * t * slope0) || e2 < err_old * (1 - 1e-4 * t));
+                               : ((slope0 < 0 && de <= 1e-4 * t * slope0) ||
+                                  (e2 < err_old * (1 - 1e-4 * t) && !(convex() && de > 0)));
         if(ok) { err = e2; energy_ += de; return true; }
       }
       if(strict) break;
@@ -547,6 +588,7 @@ private:
   Sparse_matrix H_;
   Eigen::VectorXd delta_, cg_r_, cg_w_, cg_p_;
   bool from_cg_ = false;
+  double shift_ = 0;                // the Levenberg-Marquardt shift of the last factorization (0: none)
   int last_cg_iterations_ = 0;      // CG iterations of the last accepted inexact direction
   double energy_ = 0;
 };
