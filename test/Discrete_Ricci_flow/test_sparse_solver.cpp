@@ -329,9 +329,10 @@ CGAL_HC_TEST_CASE(polishing_factorizes_only_above_1e_12)
     // the CG budget of SimplicialLDLT assumes a factorization twice (not 4 times, as CHOLMOD's) as fast per flop
     // as a solve: elephant Loop x1 (22k faces) made 3 factorizations in 9 + 1 iterations (5 with the budget of
     // CHOLMOD); since the line search no longer accepts an estimated energy increase (2026-12-07, later) it
-    // makes 4 in 7 + 1 iterations, in the same time
+    // takes 7 + 1 iterations, with 4 factorizations until its polishing step took the tolerance it needs
+    // (`Newton_solver::direction()`), 3 since
     if(k == elephant_loop1 && s == RF::Sparse_solver::SIMPLICIAL_LDLT)
-      CGAL_HC_CHECK_MSG(sd.number_of_factorizations <= 4, sd.number_of_factorizations << " factorizations");
+      CGAL_HC_CHECK_MSG(sd.number_of_factorizations <= 3, sd.number_of_factorizations << " factorizations");
   }
   CGAL_HC_CHECK(polished > 0); // some polishing step was taken
 }
