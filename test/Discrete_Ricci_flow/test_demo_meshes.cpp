@@ -288,7 +288,9 @@ CGAL_HC_TEST_CASE(noisy_beam_spherical_maps)
   std::cout << "  noisy beam.off: " << shifted << " shifted factorizations over 40 maps" << std::endl;
 }
 
-// A convex flow never accepts a step that its energy estimate says increased the energy. joint.off stretched
+// A convex flow never accepts a step that its energy estimate (the trapezoidal rule on the gradients, which
+// `Flow_statistics::energy_history` records) says increased the energy; the independent check is the outcome,
+// the final max |K|. joint.off stretched
 // 1000 times along x and shrunk 1000 times along z (triangles with angles down to 4e-8): before 2026-12-07
 // (later) the line search accepted such steps when the max error decreased, and the flow cycled through the same
 // 10 iterates until MAXIMUM_ITERATIONS (max |K| 3.3); now its energy decreases monotonically and the flow

@@ -20,6 +20,8 @@
 #include <map>
 #include <set>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
 #include <memory>
 #include <vector>
 
@@ -208,49 +210,36 @@ inline Vec3 boost(const Vec3& x, const Vec3& d, long double beta)
   return r;
 }
 
-/// moves the centre of mass of the points to the origin by boosts (Newton steps on the conformal barycentre,
-/// Douady-Earle); returns the iterations, `residual` the final |centre|. A boost b (direction b / |b|,
-/// parameter |b|) moves the centre mu by (M - I) b to first order, M the mean of x x^T (the boost's derivative
-/// at x is (x.b) x - b): the step solves (I - M) b = mu, damped to |b| <= 0.5. (A scalar step b = mu / mu^T (I -
-/// M) mu / |mu|^2, used before 2026-12-07, converged linearly, 1% per iteration, when the points form two
-/// antipodal clusters: cheese-box.off stretched 30 times along x did not reach 1e-13 in 1000 iterations.)
+/// moves the centre of mass of the points to the origin by boosts (Newton steps); returns the iterations,
+/// `residual` the final |centre|. A boost b (direction b / |b|, parameter |b|) moves the centre mu by (M - I) b
+/// to first order, M the mean of x x^T (the boost's derivative at x is (x.b) x - b): the step solves
+/// (I - M) b = mu (I - M is positive semi-definite, singular only when all points lie on one axis; then the
+/// scalar step below), damped to |b| <= 0.5. (The scalar step b = mu / rho, rho = mu^T (I - M) mu / |mu|^2,
+/// used alone before 2026-12-07, converged linearly, 1% per iteration, when the points form two antipodal
+/// clusters: cheese-box.off stretched 30 times along x did not reach 1e-13 in 1000 iterations.)
 inline int moebius_normalize(std::vector<Vec3>& x, double& residual)
 {
+  typedef Eigen::Matrix<long double, 3, 1> V3;
+  typedef Eigen::Matrix<long double, 3, 3> M3;
   const int max_iterations = 1000;
   const long double inv_n = 1.0L / (long double)(x.size());
   for(int it = 0; it < max_iterations; ++it) {
-    Vec3 mu = {0, 0, 0};
-    long double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}; // I - M
-    for(const Vec3& p : x)
-      for(int k = 0; k < 3; ++k) {
-        mu[k] += p[k] * inv_n;
-        for(int l = 0; l < 3; ++l) A[k][l] -= p[k] * p[l] * inv_n;
-      }
-    const long double norm = std::sqrt(mu[0] * mu[0] + mu[1] * mu[1] + mu[2] * mu[2]);
+    V3 mu = V3::Zero();
+    M3 A = M3::Identity(); // I - M
+    for(const Vec3& q : x) {
+      const V3 p(q[0], q[1], q[2]);
+      mu += inv_n * p;
+      A -= inv_n * (p * p.transpose());
+    }
+    const long double norm = mu.norm();
     residual = double(norm);
     if(residual < 1e-13) return it;
-    // b = (I - M)^{-1} mu by Cramer's rule (I - M is symmetric positive semi-definite, singular only when all
-    // points lie on one axis); the scalar step when it is singular or the solution not finite
-    const long double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
-                            A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-    Vec3 b = {0, 0, 0};
-    bool solved = det > 0;
-    if(solved) {
-      for(int k = 0; k < 3; ++k) {
-        long double C[3][3];
-        for(int r = 0; r < 3; ++r) for(int c = 0; c < 3; ++c) C[r][c] = c == k ? mu[r] : A[r][c];
-        b[k] = (C[0][0] * (C[1][1] * C[2][2] - C[1][2] * C[2][1]) - C[0][1] * (C[1][0] * C[2][2] - C[1][2] * C[2][0]) +
-                C[0][2] * (C[1][0] * C[2][1] - C[1][1] * C[2][0])) / det;
-      }
-      solved = std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && (b[0] * mu[0] + b[1] * mu[1] + b[2] * mu[2]) > 0;
-    }
-    if(!solved) {
-      long double spread = 0;
-      for(int k = 0; k < 3; ++k) for(int l = 0; l < 3; ++l) spread += mu[k] * A[k][l] * mu[l];
-      spread /= norm * norm;
-      for(int k = 0; k < 3; ++k) b[k] = mu[k] / (std::max)(spread, 1e-3L);
-    }
-    const long double bn = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    const Eigen::LLT<M3> llt(A);
+    V3 b;
+    if(llt.info() == Eigen::Success) b = llt.solve(mu);
+    if(llt.info() != Eigen::Success || !b.allFinite() || !(b.dot(mu) > 0))
+      b = mu / (std::max)(mu.dot(A * mu) / (norm * norm), 1e-3L);
+    const long double bn = b.norm();
     const Vec3 d = {b[0] / bn, b[1] / bn, b[2] / bn};
     const long double beta = (std::min)(bn, 0.5L);
     for(Vec3& p : x) p = boost(p, d, beta);
@@ -351,9 +340,7 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
         // a link edge: the flip joins p to the apex on the other side, which must not be a neighbour of p
         // already (the star of p would not be a disk: a multi-edge of the intrinsic triangulation)
         const auto q = a == p ? b : a;
-        bool adjacent = q == p;
-        for(auto g : CGAL::halfedges_around_source(p, m)) if(m.target(g) == q) adjacent = true;
-        if(adjacent) continue;
+        if(q == p || m.halfedge(p, q) != Mesh::null_halfedge()) continue;
       }
       se.flip(e); ++done;
     }

@@ -431,12 +431,12 @@ private:
       if(ok) { right_hand_side(delta_); ok = chol_.solve_in_place(delta_); }
       if((ok && chol_.positive_definite()) || !convex()) return ok;
     }
-    double mean_diag = 0;
-    for(int j = 0; j < n_; ++j) mean_diag += std::abs(H_.valuePtr()[H_.outerIndexPtr()[j]]); // (first of its column)
-    mean_diag = (std::max)(mean_diag / double((std::max)(n_, 1)), 1e-300);
+    // (the fixed vertices' rows and columns are the identity, with a zero right-hand side: shifting them too
+    // leaves their zero step unchanged)
+    const double mean_diag = (std::max)(n_ > 0 ? double(H_.diagonal().cwiseAbs().mean()) : 0.0, 1e-300);
     double applied = 0;
     for(double mu = (std::max)(1e-10 * mean_diag, min_shift); mu <= 10 * mean_diag; mu *= 1e3) {
-      for(int j = 0; j < n_; ++j) if(!o_.fixed[j]) H_.valuePtr()[H_.outerIndexPtr()[j]] += mu - applied;
+      H_.diagonal().array() += mu - applied;
       applied = mu;
       ok = chol_.factorize(H_, eng_.pattern_version, st_);
       if(ok) { right_hand_side(delta_); ok = chol_.solve_in_place(delta_); }
