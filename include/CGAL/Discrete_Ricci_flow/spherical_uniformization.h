@@ -295,6 +295,13 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
 {
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   const int max_rounds = 30;
+  // a round's flow gets at most `round_iterations` of the iteration bound: a disk whose boundary (the link of p)
+  // is not the one of the solution has no minimizer (the flow wanders), and only the flips at p between rounds
+  // change that boundary. The next round starts from the last u of each vertex that stays interior (a warm
+  // start: the same Newton iteration continues where the boundary did not change)
+  const int round_iterations = 30;
+  std::vector<double> u_last(m.number_of_vertices(), std::numeric_limits<double>::quiet_NaN());
+  double mean_log_last = 0;
   for(int round = 0; ; ++round) {
     auto orig = m.template property_map<typename Mesh::Vertex_index, std::size_t>("v:orig").first;
     auto lam = m.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
@@ -309,14 +316,22 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
     eng.reset(new Flow_engine<Point_3>(disk, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true));
     for(auto e : disk.edges()) eng->edge_data[e] = dlam[e];
     Newton_options o = options;
-    o.max_iterations = options.max_iterations - st.iterations; // the iteration bound is for all rounds together
+    // the iteration bound is for all rounds together
+    o.max_iterations = (std::min)(options.max_iterations - st.iterations, round_iterations);
     o.fixed.assign(disk.number_of_vertices(), 0);
     o.fixed_in_error = false;
-    for(auto v : disk.vertices())
+    for(auto v : disk.vertices()) {
       if(disk.is_border(v)) { o.fixed[v] = 1; eng->u[v] = -2 * (std::log(star.at(dorig[v])) - mean_log); }
+      // the Dirichlet values moved by 2 (mean_log - mean_log_last): the solution moves with them
+      else if(std::isfinite(u_last[dorig[v]])) eng->u[v] = u_last[dorig[v]] + 2 * (mean_log - mean_log_last);
+    }
     Flow_statistics rs;
     Newton_solver<Point_3>(*eng, o, rs).run();
     accumulate(st, rs);
+    for(auto v : disk.vertices()) u_last[dorig[v]] = eng->u[v];
+    mean_log_last = mean_log;
+    // the round's share of the iteration bound ran out: continue (after the flips at p, if any)
+    const bool unfinished = rs.status == Flow_status::MAXIMUM_ITERATIONS && st.iterations < options.max_iterations;
     // the sphere after the disk's flips: the disk's (intrinsic) triangulation and the star of p
     Mesh s = disk;
     auto slam = s.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
@@ -324,7 +339,8 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
     const auto c = close_disk(s, p_orig, star);
     const std::vector<typename Mesh::Edge_index> bad = delaunay_violations_at_puncture(*eng, s, c);
     m = s; p = c;
-    if(bad.empty() || round >= max_rounds || st.iterations >= options.max_iterations) return p;
+    if(round >= max_rounds || st.iterations >= options.max_iterations) return p;
+    if(bad.empty()) { if(unfinished) continue; return p; }
     Flow_engine<Point_3> se(m, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
     auto mlam = m.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
     for(auto e : m.edges()) se.edge_data[e] = mlam[e];
@@ -346,7 +362,7 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
     }
     for(auto e : m.edges()) mlam[e] = se.edge_data[e];
     st.number_of_flips += done;
-    if(done == 0) return p;
+    if(done == 0 && !unfinished) return p;
   }
 }
 
@@ -440,7 +456,8 @@ Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Poin
 
   \param tm a closed connected genus-0 triangle mesh (`FaceListGraph`)
   The outcome depends on the puncture vertex (the Delaunay condition at p is restored by Ptolemy flips between
-  whole disk solves, which can cycle or end in a non-simplicial triangulation): without `puncture_vertex`, a
+  disk solves, which can cycle or end in a non-simplicial triangulation; a disk solve gets at most 30 Newton
+  iterations of the bound, the next one starts from the last conformal factors): without `puncture_vertex`, a
   vertex of largest degree is tried first, then the next two by degree and 4 vertices spread over the index
   range, then (small meshes) the other vertices by degree, until one gives a valid map
   (`Spherical_map::converged()`: a converged flow can still leave the Delaunay condition at p violated,
