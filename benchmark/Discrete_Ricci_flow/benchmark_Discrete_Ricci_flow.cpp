@@ -20,12 +20,25 @@
 //         factorization_s=<f> factorization_cpu_s=<fc> total_over_factorization=<t/f> cpu_over_factorization=<c/fc>
 //         peak_MB=<m> input_MB=<parent>
 // and per mesh `RATIO mesh=<name> ldlt_ref_over_cholmod=<r> ldlt_over_cholmod=<r'>` (wall and CPU).
+//
+// Usage: benchmark_Discrete_Ricci_flow spherical [max_faces]   (default 100000)
+// Spherical uniformization (`spherical_uniformization()`, default options) of every closed connected genus-0
+// demo mesh (the test suite's loop, `test/Discrete_Ricci_flow/demo_meshes.h`: quads triangulated, soups
+// repaired), in this process, one line per mesh:
+//   SPHERE mesh=<name> faces=<F> valid=<0|1> flow=<status> iterations=<k> flips=<f> factorizations=<n>
+//          puncture=<p> total_s=<t> cpu_s=<c> factorization_s=<f1> total_over_factorization=<t/f1>
+// with the reference f1 = one analysis + factorization + solve, with the default solver for that size, of the
+// Hessian of the Euclidean flow at the input lengths (the cotangent Laplacian) with vertex 0 fixed, best of two:
+// the system the disk flow solves, at the scale of the whole mesh. Then a `SPHERE_SUMMARY` line.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/Discrete_Ricci_flow.h>
 
+#include "../../test/Discrete_Ricci_flow/demo_meshes.h"
+
+#include <algorithm>
 #include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -163,8 +176,73 @@ static void run_all(const std::string& name, const Mesh& mesh, std::size_t ldlt_
               << ")" << std::endl;
 }
 
+// one analysis + factorization + solve of the cotangent Laplacian of `mesh` (vertex 0 fixed) with the default
+// solver for its size, best of two (wall seconds)
+static double cotangent_laplacian_factorization(const Mesh& mesh)
+{
+  Mesh m = mesh;
+  RF::internal::Flow_engine<Point_3> eng(m, RF::Background_geometry::EUCLIDEAN, RF::Scheme::VERTEX_SCALING, false);
+  for(auto e : m.edges()) eng.edge_data[e] = 0.5 * std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
+  eng.compute_lengths();
+  eng.compute_angles();
+  const int n = int(m.number_of_vertices());
+  std::vector<char> fixed(std::size_t(n), 0);
+  fixed[0] = 1;
+  Eigen::SparseMatrix<double> H;
+  eng.hessian_lower(H, fixed);
+  Eigen::VectorXd b = Eigen::VectorXd::Ones(n), x(n);
+  b[0] = 0;
+  double best = 1e300;
+  for(int rep = 0; rep < 2; ++rep) {
+    RF::internal::Sparse_cholesky solver(RF::Sparse_solver::DEFAULT, std::size_t(n));
+    RF::Flow_statistics st;
+    const double w0 = wall_now();
+    if(!solver.solve(H, 0, b, x, st)) std::cerr << "factorization failed" << std::endl;
+    best = (std::min)(best, wall_now() - w0);
+  }
+  return best;
+}
+
+static int spherical_benchmark(std::size_t max_faces)
+{
+  std::size_t maps = 0, valid = 0;
+  double total = 0;
+  std::vector<double> ratios;
+  for(const auto& nm : ricci_test::demo_meshes(0, 0)) {
+    const Mesh& mesh = nm.second;
+    if(mesh.number_of_faces() > max_faces) continue;
+    std::string name = nm.first;
+    std::replace(name.begin(), name.end(), ' ', '_');
+    ++maps;
+    const double w0 = wall_now(), c0 = cpu_now();
+    try {
+      const auto s = RF::spherical_uniformization(mesh);
+      const double w = wall_now() - w0, c = cpu_now() - c0;
+      const double f = cotangent_laplacian_factorization(mesh);
+      const auto& st = s.statistics();
+      valid += s.converged() ? 1 : 0;
+      total += w;
+      ratios.push_back(w / f);
+      std::cout << "SPHERE mesh=" << name << " faces=" << mesh.number_of_faces() << " valid=" << s.converged()
+                << " flow=" << RF::to_string(st.status) << " iterations=" << st.iterations << " flips=" << st.number_of_flips
+                << " factorizations=" << st.number_of_factorizations << " puncture=" << s.puncture_vertex()
+                << " total_s=" << w << " cpu_s=" << c << " factorization_s=" << f << " total_over_factorization=" << w / f
+                << std::endl;
+    } catch(const std::exception& e) {
+      std::cout << "SPHERE mesh=" << name << " faces=" << mesh.number_of_faces() << " valid=0 error=\"" << e.what() << "\"" << std::endl;
+    }
+  }
+  std::sort(ratios.begin(), ratios.end());
+  std::cout << "SPHERE_SUMMARY maps=" << maps << " valid=" << valid << " total_s=" << total << " median_total_over_factorization="
+            << (ratios.empty() ? 0.0 : ratios[ratios.size() / 2]) << " max_total_over_factorization="
+            << (ratios.empty() ? 0.0 : ratios.back()) << std::endl;
+  return valid == maps ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int main(int argc, char** argv)
 {
+  if(argc > 1 && std::string(argv[1]) == "spherical")
+    return spherical_benchmark(argc > 2 ? std::size_t(std::atol(argv[2])) : 100000);
   const std::size_t max_faces = argc > 1 ? std::size_t(std::atol(argv[1])) : 3000000;
   const std::size_t ldlt_max = argc > 2 ? std::size_t(std::atol(argv[2])) : 1500000;
   const std::size_t min_faces = argc > 3 ? std::size_t(std::atol(argv[3])) : 0;

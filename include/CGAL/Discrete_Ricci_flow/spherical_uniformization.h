@@ -187,8 +187,11 @@ std::vector<Cplx> layout_flat_disk(const Flow_engine<Point_3>& eng)
       if(placed_f[g]) continue;
       const std::array<Cplx, 3> zg = chart(g);
       const int io = o == m.halfedge(g) ? 0 : (o == m.next(m.halfedge(g)) ? 1 : 2);
-      // the chart of g placed so that its edge o matches the placed edge hs[i] (source(hs[i]) = target(o))
-      place[g] = euclidean_from_pairs(zg[(io + 1) % 3], zg[io], place[f](z[i]), place[f](z[(i + 1) % 3]));
+      // the chart of g placed so that its edge o matches the placed edge hs[i] (source(hs[i]) = target(o)): the
+      // transition between the two charts (both at the scale of their triangles) composed with the placement
+      // of f, not fitted to the placed points: a conformal map can shrink faces below the resolution of the
+      // coordinates, where two placed points coincide (triceratops.off stretched 30 times: NaN positions)
+      place[g] = place[f] * euclidean_from_pairs(zg[(io + 1) % 3], zg[io], z[i], z[(i + 1) % 3]);
       placed_f[g] = 1;
       queue.push_back(g);
     }
