@@ -374,6 +374,26 @@ CGAL_HC_TEST_CASE(iteration_limit_status)
   CGAL_HC_CHECK(c.statistics().iterations == 1);
 }
 
+// cancelling a spherical uniformization stops it: before 2026-12-07 the other rounds and puncture candidates
+// went on (camel.off: the callback, returning false from its first call, was called 56 times), and a cancelled
+// candidate whose unfinished layout was not simplicial threw Numerical_error
+CGAL_HC_TEST_CASE(spherical_cancellation_stops)
+{
+  const Mesh tm = read_mesh(cgal_mesh("camel.off"));
+  for(int allowed : {0, 3}) {
+    int calls = 0;
+    try {
+      const auto s = RF::spherical_uniformization(tm, CGAL::parameters::callback([&](const RF::Flow_progress&) { return ++calls <= allowed; }));
+      CGAL_HC_CHECK_MSG(s.statistics().status == RF::Flow_status::CANCELLED, RF::to_string(s.statistics().status));
+      CGAL_HC_CHECK(!s.converged());
+      CGAL_HC_CHECK(s.sphere_points().empty());
+      CGAL_HC_CHECK_MSG(calls == allowed + 1, "the callback was called " << calls << " times");
+    } catch(const CGAL::Hyperbolic_geometry_error& e) {
+      CGAL_HC_CHECK_MSG(false, "cancelled after " << allowed << " calls: " << e.what());
+    }
+  }
+}
+
 // the flow works on other FaceGraph models
 CGAL_HC_TEST_CASE(polyhedron_input)
 {

@@ -333,6 +333,7 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
     accumulate(st, rs);
     for(auto v : disk.vertices()) u_last[dorig[v]] = eng->u[v];
     mean_log_last = mean_log;
+    const bool cancelled = rs.status == Flow_status::CANCELLED;
     // the round's share of the iteration bound ran out: continue (after the flips at p, if any)
     const bool unfinished = rs.status == Flow_status::MAXIMUM_ITERATIONS && st.iterations < options.max_iterations;
     // the sphere after the disk's flips: the disk's (intrinsic) triangulation and the star of p
@@ -342,7 +343,7 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
     const auto c = close_disk(s, p_orig, star);
     const std::vector<typename Mesh::Edge_index> bad = delaunay_violations_at_puncture(*eng, s, c);
     m = s; p = c;
-    if(round >= max_rounds || st.iterations >= options.max_iterations) return p;
+    if(cancelled || round >= max_rounds || st.iterations >= options.max_iterations) return p;
     if(bad.empty()) { if(unfinished) continue; return p; }
     Flow_engine<Point_3> se(m, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true);
     auto mlam = m.template property_map<typename Mesh::Edge_index, double>("e:lambda").first;
@@ -393,6 +394,8 @@ Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Poin
   const V pc = sphere_flow(m, pv, o, disk, eng, st);
   auto dorig = disk.template property_map<V, std::size_t>("v:orig").first;
   auto morig = m.template property_map<V, std::size_t>("v:orig").first;
+  // the callback asked to stop: the statistics, no map (the layout of an unfinished flow can be anything)
+  if(st.status == Flow_status::CANCELLED) { res.puncture_ = morig[pc]; return res; }
 
   // layout, inverse stereographic projection (the mirror image: the projection reverses the orientation),
   // Moebius normalization
@@ -474,7 +477,9 @@ Spherical_map<Point_3> spherical_map_with_puncture(const CGAL::Surface_mesh<Poin
 
   \param np named parameters: `puncture_vertex(i)` (default: the candidates above), `vertex_point_map`,
          `vertex_index_map`, `input_edge_length_map`, `number_of_iterations`, `accuracy`, `sparse_solver`,
-         `verbose`, `callback` (as `compute_metric()`). Zero-area faces are flipped away first.
+         `verbose`, `callback` (as `compute_metric()`; when it returns false, the call returns at once with the
+         status `CANCELLED`, no other puncture is tried, and the map has no points). Zero-area faces are
+         flipped away first.
   \throws CGAL::Invalid_mesh_error unless `tm` is a closed connected genus-0 triangle mesh;
           CGAL::Numerical_error if the normalization fails. Non-convergence of the flow is a status.
 */
@@ -538,8 +543,10 @@ spherical_uniformization(const TriangleMesh& tm, const NamedParameters& np = CGA
   for(std::size_t c : candidates) {
     try {
       Spherical_map<Point_3> r = internal::spherical_map_with_puncture<Point_3>(m, len, c, o);
-      if(r.converged() || !have) { res = std::move(r); have = true; }
-      if(res.converged()) break;
+      // the callback asked to stop: no other candidate
+      const bool cancelled = r.statistics().status == Flow_status::CANCELLED;
+      if(r.converged() || !have || cancelled) { res = std::move(r); have = true; }
+      if(res.converged() || cancelled) break;
     } catch(const CGAL::Numerical_error&) {
       if(!error) error = std::current_exception();
     }
