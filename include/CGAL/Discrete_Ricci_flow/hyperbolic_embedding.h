@@ -58,13 +58,16 @@ namespace Discrete_Ricci_flow {
     matrices are then as small as they can be in any frame, which is what limits the accuracy of their
     products in double. The base vertex's lift is at `base_point()` (the origin only if that is optimal);
     they are rounded to double once, at the end. Their products in double have a floor of about
-    1e-16 max_k cosh(translation length of the relator's partial product P_k) in every frame (turbine.off:
-    1e-8 at best, cheese.off: 3e5; the manual's "Accuracy of the relator");
+    1e-16 max_k cosh(translation length of the relator's partial product P_k) in every frame, which the
+    rotation of the relator (below) makes as small as the basis allows (the manual's "Accuracy of the
+    relator": double defect 5e-7 on turbine.off, cheese.off not representable in double);
   - exact deck transformations (`deck_transformations_exact()`, on demand): the long-double ones converted
     exactly when their exact relator product is within 1e-10 of the identity, otherwise the same development
     in MPFR at a precision chosen from the measured condition, on the metric polished to that precision;
     `relator_defect_exact()` is their exact product's defect (<= 7.6e-12 on every closed demo mesh);
-  - the relator: the boundary of the disk cut along the loops, read in the loops (`relator()`); the product of
+  - the relator: the boundary of the disk cut along the loops, read in the loops, starting at the corner (and
+    in the direction) whose partial products have the smallest largest translation length (`relator()`, a
+    cyclic rotation of `basis().relator()` or of its inverse); the product of
     the deck transformations in that order is the identity: `relator_defect()` measures it as a user does
     (double products of the returned matrices), `relator_defect_long_double()` before the rounding;
   - the canonical system a1, b1, ..., ag, bg (relator [a1, b1] ... [ag, bg]) from
@@ -138,9 +141,13 @@ public:
     const std::array<internal::Cplx, 3> z = charts().chart(m_.face(root_));
     const internal::Cplx zb = z[internal::index_in_face(m_, m_.next(root_))]; // source(next(root)) = base
     frame_ = hyperbolic_ ? internal::Motion::translation_to_origin(zb) : internal::Motion::euclidean(1, -zb);
-    for(const int l : basis_->relator()) relator_.push_back({std::size_t(std::abs(l) - 1), l > 0 ? 1 : -1});
+    relator_word_ = basis_->relator();
     compute_holonomies();
-    if(hyperbolic_) recentre();
+    if(hyperbolic_) {
+      relator_word_ = internal::best_relator_rotation(hol_, relator_word_);
+      recentre();
+    }
+    for(const int l : relator_word_) relator_.push_back({std::size_t(std::abs(l) - 1), l > 0 ? 1 : -1});
     domain_ = Domain(m_, root_, frame_, charts(), [this](Halfedge_index h) { return metric_.length(h); });
   }
 
@@ -219,7 +226,11 @@ public:
     return double(std::sqrt(hol_[i].h.squared_normalized_trace()));
   }
 
-  /// the relator: the boundary of the cut disk read as letters (loop index, +1 or -1): `basis().relator()`
+  /// the relator: the boundary of the cut disk read as letters (loop index, +1 or -1): `basis().relator()`, and
+  /// in the hyperbolic background the cyclic rotation of it or of its inverse (the same relation) whose partial
+  /// products have the smallest largest translation length: no frame takes the squared norms of the partial
+  /// products below cosh of that length, which bounds the rounding floor of the product in double (turbine.off,
+  /// base vertex 0: condition 7e10 -> 7e7, double defect 1e-2 -> 3e-7; the manual's "Accuracy of the relator")
   const std::vector<std::pair<std::size_t, int> >& relator() const { return relator_; }
 
   /// the product of the deck transformations along `relator()` (the identity up to rounding)
@@ -443,12 +454,12 @@ private:
   {
     if(!exact_)
       exact_ = std::make_shared<const internal::Exact_data>(
-        internal::Exact_deck_transformations<Mesh, Basis>(m_, *basis_, root_, frame_, long_half_sinh_)
+        internal::Exact_deck_transformations<Mesh, Basis>(m_, *basis_, relator_word_, root_, frame_, long_half_sinh_)
           .compute(hol_, relator_condition(), polish_after_, polish_steps_));
     return *exact_;
   }
 
-  Word relator_word() const { return basis_->relator(); }
+  const Word& relator_word() const { return relator_word_; }
   internal::Motion letter(int l) const { return internal::letter(hol_, l); }
   // the product of the letters of w over the generators g (the deck transformations by default)
   internal::Motion product(const Word& w) const { return product(hol_, w); }
@@ -497,6 +508,7 @@ private:
   internal::Motion frame_;
   internal::Cplx base_point_ = internal::Cplx(0);
   std::vector<internal::Motion> hol_;
+  Word relator_word_; // basis().relator(), rotated (hyperbolic background: internal::best_relator_rotation())
   std::vector<std::pair<std::size_t, int> > relator_;
   Domain domain_; // the fundamental domain for pictures and side pairings
   mutable std::shared_ptr<const internal::Exact_data> exact_; // computed on demand (exact_data())

@@ -44,9 +44,10 @@ public:
   typedef typename Mesh::Halfedge_index Halfedge_index;
   typedef typename Mesh::Face_index Face_index;
 
-  Exact_deck_transformations(const Mesh& m, const Basis& basis, Halfedge_index root, const Motion& frame,
-                             const std::vector<Real>& half_sinh)
-    : m_(m), basis_(basis), root_(root), frame_(frame), long_half_sinh_(half_sinh)
+  /// `relator`: the embedding's relator word (`basis.relator()` rotated, Hyperbolic_embedding::relator())
+  Exact_deck_transformations(const Mesh& m, const Basis& basis, const std::vector<int>& relator, Halfedge_index root,
+                             const Motion& frame, const std::vector<Real>& half_sinh)
+    : m_(m), basis_(basis), relator_(relator), root_(root), frame_(frame), long_half_sinh_(half_sinh)
   {}
 
   /// the precision ladder, from the long-double holonomies `hol` (in `frame`), the relator's condition they
@@ -78,7 +79,7 @@ public:
 private:
   double relator_defect(const std::vector<Exact_isometry>& d) const
   {
-    return exact_defect(word_product(d, basis_.relator(), Exact_isometry()));
+    return exact_defect(word_product(d, relator_, Exact_isometry()));
   }
 
   // the development of every loop in MPFR at `bits` bits on the metric polished to that precision, in the frame
@@ -137,7 +138,7 @@ private:
     // the condition: max over the partial products of |alpha|^2 + |beta|^2 = cosh d(0, P_k 0)
     Mp_isometry m;
     R c = 1;
-    for(const int l : basis_.relator()) {
+    for(const int l : relator_) {
       m = (m * letter(hol, l)).normalized();
       const R q = squared_norm(m);
       if(q > c) c = q;
@@ -150,6 +151,7 @@ private:
 
   const Mesh& m_;
   const Basis& basis_;
+  const std::vector<int>& relator_;
   Halfedge_index root_;
   const Motion& frame_;
   const std::vector<Real>& long_half_sinh_;

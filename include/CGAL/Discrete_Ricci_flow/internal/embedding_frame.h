@@ -64,6 +64,35 @@ inline Cplx frame_centre(const std::vector<Motion>& elements)
   return c;
 }
 
+/// The cyclic rotation of the relator word w, or of its inverse, whose partial products P_1 .. P_{n-1} over the
+/// hyperbolic motions g have the smallest largest |trace| (the first such in the order j = 0 .. n-1, w before its
+/// inverse). A rotation is a conjugate of the same relation; the trace of a partial product does not depend on
+/// the frame, and cosh of its translation length is the least squared norm the product has in any frame, so
+/// this is the rotation whose rounding floor in double is lowest (the manual's "Accuracy of the relator").
+/// O(n^2) products of 2 x 2 matrices.
+inline std::vector<int> best_relator_rotation(const std::vector<Motion>& g, const std::vector<int>& w)
+{
+  const std::size_t n = w.size();
+  std::vector<int> best = w;
+  Real best_cost = std::numeric_limits<Real>::infinity();
+  for(int inv = 0; inv < 2; ++inv)
+    for(std::size_t j = 0; j < n; ++j) {
+      Motion m = Motion::identity(true);
+      Real cost = 0; // max over k of trace^2 / (4 det), i.e. cosh^2 of half the translation length
+      for(std::size_t k = 0; k + 1 < n && cost < best_cost; ++k) {
+        m = m * letter(g, inv ? -w[(j + n - k) % n] : w[(j + k) % n]);
+        const Real det = m.h.determinant();
+        const Real c = m.h.alpha_real() * m.h.alpha_real() / det;
+        cost = std::isfinite(c) ? (std::max)(cost, c) : std::numeric_limits<Real>::infinity();
+      }
+      if(cost < best_cost) {
+        best_cost = cost;
+        for(std::size_t k = 0; k < n; ++k) best[k] = inv ? -w[(j + n - k) % n] : w[(j + k) % n];
+      }
+    }
+  return best;
+}
+
 } // namespace internal
 } // namespace Discrete_Ricci_flow
 } // namespace CGAL
