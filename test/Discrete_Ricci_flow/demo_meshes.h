@@ -50,6 +50,28 @@ inline bool closed_connected_mesh(const std::string& f, CGAL::Surface_mesh<CGAL:
   return PMP::connected_components(m, CGAL::make_property_map(cc)) == 1;
 }
 
+// m = the demo mesh of file f as the loop below takes it (read, else repaired; triangulated), `name` its name
+// in the loop; false if it is not closed and connected either way
+inline bool load_demo_mesh(const std::string& f, CGAL::Surface_mesh<CGAL::Epick::Point_3>& m, std::string& name)
+{
+  name = f.substr(f.find_last_of('/') + 1);
+  if(!closed_connected_mesh(f, m, false)) {
+    if(!closed_connected_mesh(f, m, true)) return false;
+    name += " (repaired)";
+  }
+  if(!CGAL::is_triangle_mesh(m)) CGAL::Polygon_mesh_processing::triangulate_faces(m);
+  return true;
+}
+
+// the demo mesh meshes/<file> of CGAL's demo data (load_demo_mesh()); an empty mesh if it cannot be loaded
+inline CGAL::Surface_mesh<CGAL::Epick::Point_3> demo_mesh(const std::string& file)
+{
+  CGAL::Surface_mesh<CGAL::Epick::Point_3> m;
+  std::string name;
+  if(!load_demo_mesh(std::string(CGAL_HC_CGAL_DATA_DIR) + "/meshes/" + file, m, name)) m.clear();
+  return m;
+}
+
 inline std::vector<std::pair<std::string, CGAL::Surface_mesh<CGAL::Epick::Point_3> > >
 demo_meshes(long genus_min, long genus_max, const std::vector<std::string>& extra_files = std::vector<std::string>())
 {
@@ -62,12 +84,8 @@ demo_meshes(long genus_min, long genus_max, const std::vector<std::string>& extr
   std::vector<std::pair<std::string, Mesh> > r;
   for(const std::string& f : files) {
     Mesh m;
-    std::string name = f.substr(f.find_last_of('/') + 1);
-    if(!closed_connected_mesh(f, m, false)) {
-      if(!closed_connected_mesh(f, m, true)) continue;
-      name += " (repaired)";
-    }
-    if(!CGAL::is_triangle_mesh(m)) CGAL::Polygon_mesh_processing::triangulate_faces(m);
+    std::string name;
+    if(!load_demo_mesh(f, m, name)) continue;
     const long chi = long(m.number_of_vertices()) - long(m.number_of_edges()) + long(m.number_of_faces());
     if(chi > 2 || chi % 2 != 0) continue;
     const long g = (2 - chi) / 2;

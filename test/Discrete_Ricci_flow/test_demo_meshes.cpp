@@ -272,13 +272,12 @@ CGAL_HC_TEST_CASE(demo_meshes_genus_0_perturbed)
 // disk, and small meshes try more punctures
 CGAL_HC_TEST_CASE(noisy_beam_spherical_maps)
 {
-  const auto meshes = demo_meshes(0, 0);
-  const auto it = std::find_if(meshes.begin(), meshes.end(), [](const std::pair<std::string, Mesh>& nm) { return nm.first == "beam.off"; });
-  CGAL_HC_CHECK(it != meshes.end());
-  if(it == meshes.end()) return;
+  const Mesh mesh = ricci_test::demo_mesh("beam.off");
+  CGAL_HC_CHECK(!mesh.is_empty());
+  if(mesh.is_empty()) return;
   std::size_t shifted = 0;
   for(unsigned long long seed = 1; seed <= 40; ++seed) {
-    const Mesh m = perturbed(it->second, 1, seed);
+    const Mesh m = perturbed(mesh, 1, seed);
     try {
       const auto s = RF::spherical_uniformization(m);
       CGAL_HC_CHECK_MSG(s.converged(), "seed " << seed << ": " << RF::to_string(s.statistics().status));
@@ -299,12 +298,10 @@ CGAL_HC_TEST_CASE(noisy_beam_spherical_maps)
 // Numerical_error.
 CGAL_HC_TEST_CASE(stretched_corner_every_puncture)
 {
-  const auto meshes = demo_meshes(0, 0);
-  const auto it = std::find_if(meshes.begin(), meshes.end(), [](const std::pair<std::string, Mesh>& nm) {
-    return nm.first == "corner_with_sharp_edge.off (repaired)"; });
-  CGAL_HC_CHECK(it != meshes.end());
-  if(it == meshes.end()) return;
-  const Mesh m = perturbed(it->second, 2, 0);
+  const Mesh mesh = ricci_test::demo_mesh("corner_with_sharp_edge.off"); // repaired: it is a soup
+  CGAL_HC_CHECK(!mesh.is_empty());
+  if(mesh.is_empty()) return;
+  const Mesh m = perturbed(mesh, 2, 0);
   const auto d = RF::spherical_uniformization(m, CGAL::parameters::number_of_iterations(150));
   CGAL_HC_CHECK_MSG(d.converged(), RF::to_string(d.statistics().status) << ", flipped faces " << d.number_of_flipped_faces());
   std::size_t valid = 0, errors = 0, shifted = 0;
@@ -329,11 +326,10 @@ CGAL_HC_TEST_CASE(stretched_corner_every_puncture)
 // points are finite and on the sphere, and the map reports that it is not valid (flipped faces).
 CGAL_HC_TEST_CASE(stretched_triceratops_layout_is_finite)
 {
-  const auto meshes = demo_meshes(0, 0);
-  const auto it = std::find_if(meshes.begin(), meshes.end(), [](const std::pair<std::string, Mesh>& nm) { return nm.first == "triceratops.off"; });
-  CGAL_HC_CHECK(it != meshes.end());
-  if(it == meshes.end()) return;
-  const Mesh m = perturbed(it->second, 2, 0);
+  const Mesh mesh = ricci_test::demo_mesh("triceratops.off");
+  CGAL_HC_CHECK(!mesh.is_empty());
+  if(mesh.is_empty()) return;
+  const Mesh m = perturbed(mesh, 2, 0);
   try {
     const auto s = RF::spherical_uniformization(m, RF::parameters::puncture_vertex(0, CGAL::parameters::number_of_iterations(150)));
     CGAL_HC_CHECK_MSG(s.statistics().status == RF::Flow_status::CONVERGED, RF::to_string(s.statistics().status));
@@ -361,11 +357,9 @@ CGAL_HC_TEST_CASE(stretched_triceratops_layout_is_finite)
 // reaches its rounding floor (STAGNATED, max |K| about 3e-8)
 CGAL_HC_TEST_CASE(stretched_joint_energy_decreases)
 {
-  const auto meshes = demo_meshes(2, 2);
-  const auto it = std::find_if(meshes.begin(), meshes.end(), [](const std::pair<std::string, Mesh>& nm) { return nm.first == "joint.off"; });
-  CGAL_HC_CHECK(it != meshes.end());
-  if(it == meshes.end()) return;
-  Mesh m = it->second;
+  Mesh m = ricci_test::demo_mesh("joint.off");
+  CGAL_HC_CHECK(!m.is_empty());
+  if(m.is_empty()) return;
   for(auto v : m.vertices()) { const Point_3 p = m.point(v); m.point(v) = Point_3(1000 * p.x(), p.y(), 0.001 * p.z()); }
   const auto r = RF::hyperbolic_uniformization(m);
   const auto& st = r.statistics();

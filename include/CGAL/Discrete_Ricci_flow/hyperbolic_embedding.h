@@ -230,7 +230,7 @@ public:
   /// in the hyperbolic background the cyclic rotation of it or of its inverse (the same relation) whose partial
   /// products have the smallest largest translation length: no frame takes the squared norms of the partial
   /// products below cosh of that length, which bounds the rounding floor of the product in double (turbine.off,
-  /// base vertex 0: condition 7e10 -> 7e7, double defect 1e-2 -> 3e-7; the manual's "Accuracy of the relator")
+  /// base vertex 0: condition 7e10 -> 7e7, double defect 6e-3 -> 5e-7; the manual's "Accuracy of the relator")
   const std::vector<std::pair<std::size_t, int> >& relator() const { return relator_; }
 
   /// the product of the deck transformations along `relator()` (the identity up to rounding)
