@@ -16,6 +16,7 @@
 #include <array>
 #include <complex>
 #include <map>
+#include <random>
 #include <string>
 
 typedef CGAL::Epick K;
@@ -258,6 +259,47 @@ CGAL_HC_TEST_CASE(vertex_scaling_angles_match_a_long_double_reference)
     CGAL_HC_CHECK(checked > m.number_of_faces() / 4);
     CGAL_HC_CHECK_MSG(max_err < 1e-12, "max angle error " << max_err);
   }
+}
+
+// internal::upper_half_plane_angle() (the corner angles' atan2) against atan2l in long double, in ulps of the
+// double result: random angles over 60 binades of magnitude, and the hard spots of its reduction: t = y / |x|
+// next to every split point k / 16 and to 1 (y = |x|), tiny and huge ratios, negative x, x = 0, and the
+// magnitudes that take std::atan2 (y = 0, beyond [1e-290, 1e300], infinities, NaN)
+CGAL_HC_TEST_CASE(upper_half_plane_angle_matches_long_double)
+{
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> U(-1, 1), E(-30, 30);
+  double max_ulp = 0, max_ulp_y = 0, max_ulp_x = 0;
+  std::size_t n = 0;
+  auto check = [&](double y, double x) {
+    const double v = RF::internal::upper_half_plane_angle(y, x);
+    const long double ref = atan2l(y, x);
+    if(std::isnan(y) || std::isnan(x)) { CGAL_HC_CHECK(std::isnan(v)); return; }
+    const double rd = double(ref);
+    const double ulp = std::nextafter(rd, 10.0) - rd;
+    const double err = double(std::abs((long double)v - ref)) / ulp;
+    if(err > max_ulp) { max_ulp = err; max_ulp_y = y; max_ulp_x = x; }
+    ++n;
+  };
+  for(int i = 0; i < 1000000; ++i) {
+    const double s = std::exp2(E(gen));
+    double y = std::abs(U(gen)) * s, x = U(gen) * s * std::exp2(0.3 * E(gen));
+    switch(i % 8) {
+      case 0: x = (i % 16 ? 1 : -1) * y * (1 + 1e-12 * U(gen)); break;           // t near 1
+      case 1: x = y * 16.0 / (1 + i % 16) * (1 + 1e-15 * U(gen)); break;         // t near k / 16
+      case 2: y = std::abs(x) * double(i % 17) / 16 * (1 + 1e-15 * U(gen)); break; // t near k / 16
+      case 3: y *= 1e-17; break;                                                   // tiny angles, near pi
+      case 4: x *= 1e-17; break;                                                   // near pi / 2
+      default: break;
+    }
+    check(y, x);
+  }
+  const double specials[][2] = {{1, 0}, {1e-300, 1}, {1, -1e-300}, {0, 1}, {0, -1}, {1e305, 1e305}, {1e305, -2e305},
+                                {1e-300, 1e-300}, {4.9e-324, 1e-310}, {HUGE_VAL, 1}, {1, -HUGE_VAL}, {1, 1}, {1, -1}};
+  for(const auto& sp : specials) check(sp[0], sp[1]);
+  check(std::nan(""), 1); check(1, std::nan(""));
+  std::cout << "  " << n << " angles: max " << max_ulp << " ulp (y = " << max_ulp_y << ", x = " << max_ulp_x << ")" << std::endl;
+  CGAL_HC_CHECK_MSG(max_ulp <= 2, "upper_half_plane_angle: " << max_ulp << " ulp at y = " << max_ulp_y << ", x = " << max_ulp_x);
 }
 
 // ------------------------------------------------------------------ bad input

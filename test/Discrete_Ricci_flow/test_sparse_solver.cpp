@@ -11,6 +11,10 @@
 
 #include "cgal_hc_test.h"
 
+#include <gmpxx.h>
+#include <mpfr.h>
+
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -391,6 +395,69 @@ CGAL_HC_TEST_CASE(clearly_proper_faces_pass_the_length_test)
     CGAL_HC_CHECK(max_rejected_ratio < 1e-10); // (a margin of 100 below the threshold 1e-8)
     CGAL_HC_CHECK(length_rejected > samples / 10 && fast > samples / 20); // (both sides are exercised)
   }
+}
+
+// the corner angles of vertex scaling, theta_i = atan2(sqrt(Q), 2 num_i) from the edges' x (`algebraic_gram()`,
+// `upper_half_plane_angle()`), on needles: two long sides x0 and x1 within the short side x2 = 1e-9 to 1e-1 of
+// each other (the angles at the short side's ends are close to pi / 2 and depend on x0 - x1), in all three
+// backgrounds, against the same formula evaluated exactly: Q and num_i are polynomials in the double x, taken
+// in rationals (GMP), then atan2 at 256 bits (MPFR). Before num_i was computed as (a - x_i)(a + x_i) + b^2, the
+// angles at the short side's ends were off by up to eps x0 / x2 (9e-8 at x2 = 1e-9 x0; the test prints both).
+CGAL_HC_TEST_CASE(needle_angles_match_an_exact_reference)
+{
+  Mesh mm = read_cgal("eight.off");
+  std::mt19937_64 gen(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  mpfr_t a, b, t;
+  mpfr_inits2(256, a, b, t, (mpfr_ptr)0);
+  for(Geo geo : {Geo::HYPERBOLIC, Geo::EUCLIDEAN, Geo::SPHERICAL}) {
+    RF::internal::Flow_engine<Point_3> eng(mm, geo, RF::Scheme::VERTEX_SCALING, false);
+    const long kappa = geo == Geo::HYPERBOLIC ? 1 : geo == Geo::EUCLIDEAN ? 0 : -1;
+    double max_err = 0, worst_short = 0, max_err_expanded = 0;
+    std::size_t n = 0;
+    for(int k = 0; k < 20000; ++k) {
+      const double x0 = geo == Geo::SPHERICAL ? 0.05 + 0.9 * U(gen) : std::pow(10.0, -3 + 6 * U(gen));
+      const double x2 = x0 * std::pow(10.0, -1 - 8 * U(gen));
+      const double x1 = x0 + x2 * (2 * U(gen) - 1) * 0.99;
+      if(geo == Geo::SPHERICAL && !(x1 < 1)) continue;
+      double x[3] = {x0, x1, x2};
+      std::shuffle(x, x + 3, gen);
+      double Q = 0, num[3];
+      if(!eng.algebraic_gram(x, Q, num)) continue;
+      const mpq_class X[3] = {mpq_class(x[0]), mpq_class(x[1]), mpq_class(x[2])};
+      const mpq_class P = X[0] * X[1] * X[2];
+      // 16 area^2 of the Euclidean triangle with sides x: 2(x0^2 x1^2 + x1^2 x2^2 + x2^2 x0^2) - (x0^4 + x1^4 + x2^4)
+      const mpq_class S0 = X[0] * X[0], S1 = X[1] * X[1], S2 = X[2] * X[2];
+      const mpq_class Qx = 2 * (S0 * S1 + S1 * S2 + S2 * S0) - (S0 * S0 + S1 * S1 + S2 * S2) + 4 * kappa * P * P;
+      if(!(Qx > 0)) continue;
+      ++n;
+      for(int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        const mpq_class N = (X[j] * X[j] + X[l] * X[l] - X[i] * X[i]) / 2 + kappa * X[j] * X[j] * X[l] * X[l];
+        mpfr_set_q(a, Qx.get_mpq_t(), MPFR_RNDN); mpfr_sqrt(a, a, MPFR_RNDN);
+        mpfr_set_q(b, N.get_mpq_t(), MPFR_RNDN); mpfr_mul_ui(b, b, 2, MPFR_RNDN);
+        mpfr_atan2(t, a, b, MPFR_RNDN);
+        const double v = RF::internal::upper_half_plane_angle(std::sqrt(Q), 2 * num[i]);
+        mpfr_sub_d(t, t, v, MPFR_RNDN);
+        const double err = std::abs(mpfr_get_d(t, MPFR_RNDN));
+        // the expanded form of num_i (before): the same exact reference
+        const double expanded = 0.5 * (x[j] * x[j] + x[l] * x[l] - x[i] * x[i]) + double(kappa) * x[j] * x[j] * x[l] * x[l];
+        mpfr_add_d(t, t, v - RF::internal::upper_half_plane_angle(std::sqrt(Q), 2 * expanded), MPFR_RNDN);
+        max_err_expanded = (std::max)(max_err_expanded, std::abs(mpfr_get_d(t, MPFR_RNDN)));
+        if(err > max_err) { max_err = err; worst_short = (std::min)(x[0], (std::min)(x[1], x[2])) / (std::max)(x[0], (std::max)(x[1], x[2])); }
+      }
+    }
+    std::cout << "  " << (geo == Geo::HYPERBOLIC ? "H2" : geo == Geo::EUCLIDEAN ? "E2" : "S2") << ": " << n
+              << " needles, max |angle - exact| = " << max_err << " (short side / long side " << worst_short
+              << "); with the expanded num_i: " << max_err_expanded << std::endl;
+    CGAL_HC_CHECK(n > 10000);
+    // S^2: Q = 16 area(x)^2 - 4 (x0 x1 x2)^2 itself cancels on needles whose long sides are 1.5 to 2.5
+    // radians (nearly flat spherical triangles, one angle close to pi): about 100 eps relative in Q, 5e-14 in
+    // the angle at a short side of 1e-6 (1e-7 with the expanded num_i)
+    CGAL_HC_CHECK_MSG(max_err < (geo == Geo::SPHERICAL ? 1e-13 : 2e-15), "needle angle error " << max_err);
+    CGAL_HC_CHECK(max_err < max_err_expanded);
+  }
+  mpfr_clears(a, b, t, (mpfr_ptr)0);
 }
 
 CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)

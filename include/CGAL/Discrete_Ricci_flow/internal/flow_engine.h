@@ -174,15 +174,16 @@ public:
   // recompute the cached angles of face f. Vertex scaling: from x = sinh, sin (l / 2), l / 2 (see
   // face_hessian()), theta_i = atan2(sqrt(Q), 2 num_i) with num_i = (x_j^2 + x_k^2 - x_i^2) / 2 + kappa x_j^2 x_k^2,
   // the same angle as the half-angle formula of `triangle_angles_only()` (to a few ulps: Q and num_i have no
-  // cancellation but the one of the angle itself) without its four sinh (sin); degenerate faces (Luo's
-  // extension) and S^2 edges of length >= pi take `triangle_angles_only()`
+  // cancellation but the one of the angle itself, see `algebraic_gram()`) without its four sinh (sin), and
+  // atan2 as `upper_half_plane_angle()`; degenerate faces (Luo's extension) and S^2 edges of length >= pi take
+  // `triangle_angles_only()`
   void update_face_angles(F f)
   {
     H hs[3]; V cs[3]; double l[3], th[3];
     face_corners(m.halfedge(f), hs, cs);
-    double x[3], c[3], Q = 0, num[3];
+    double x[3], Q = 0, num[3];
     if(scheme == Scheme::VERTEX_SCALING) {
-      const bool algebraic = vertex_scaling_face(hs, x, c) && algebraic_gram(x, Q, num);
+      const bool algebraic = vertex_scaling_x(hs, x) && algebraic_gram(x, Q, num);
       bool proper = algebraic && clearly_proper(x, Q);
       if(!proper) {
         face_data(m.halfedge(f), hs, cs, l);
@@ -190,7 +191,7 @@ public:
       }
       if(algebraic && proper) {
         const double sq = std::sqrt(Q);
-        for(int i = 0; i < 3; ++i) angle[hs[i]] = std::atan2(sq, 2 * num[i]);
+        for(int i = 0; i < 3; ++i) angle[hs[i]] = upper_half_plane_angle(sq, 2 * num[i]);
         return;
       }
     } else
@@ -212,8 +213,20 @@ public:
     return geo == Background_geometry::HYPERBOLIC ? 1.0 : (geo == Background_geometry::SPHERICAL ? -1.0 : 0.0);
   }
 
-  // vertex scaling: x_j = lambda_j e^{(u_a + u_b) / 2} (the cached `x` of compute_lengths()) and
-  // c_j = sqrt(1 + kappa x_j^2) of the edges of hs; false if some c_j = 0 (S^2, l_j >= pi)
+  // vertex scaling: x_j = lambda_j e^{(u_a + u_b) / 2} (the cached `x` of compute_lengths()) of the edges of
+  // hs; false if some 1 + kappa x_j^2 <= 0 (S^2, l_j >= pi)
+  bool vertex_scaling_x(const H hs[3], double xs[3]) const
+  {
+    const double k = kappa();
+    bool ok = true;
+    for(int j = 0; j < 3; ++j) {
+      xs[j] = x[m.edge(hs[j])];
+      if(!(1 + k * xs[j] * xs[j] > 0)) ok = false;
+    }
+    return ok;
+  }
+
+  // vertex_scaling_x() and c_j = sqrt(1 + kappa x_j^2) (cosh, cos (l_j / 2), 1)
   bool vertex_scaling_face(const H hs[3], double xs[3], double c[3]) const
   {
     const double k = kappa();
@@ -227,7 +240,9 @@ public:
   }
 
   // Q = 16 area(x)^2 + 4 kappa (x_0 x_1 x_2)^2 (Kahan's stable Heron formula for the Euclidean triangle with
-  // sides x) and num_i = (x_j^2 + x_k^2 - x_i^2) / 2 + kappa x_j^2 x_k^2; false unless Q is finite and > 0
+  // sides x) and num_i = (x_j^2 + x_k^2 - x_i^2) / 2 + kappa x_j^2 x_k^2; false unless Q is finite and > 0.
+  // Test `needle_angles_match_an_exact_reference`: within 6e-16 of the exact formula on needles down to 1e-9
+  // (H^2, E^2; S^2 needles with long sides of 1.5 to 2.5 radians: 5e-14, Q itself cancels there)
   bool algebraic_gram(const double x[3], double& Q, double num[3]) const
   {
     const double k = kappa();
@@ -239,7 +254,11 @@ public:
     if(!(Q > 0) || !std::isfinite(Q)) return false;
     for(int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3, kk = (i + 2) % 3;
-      num[i] = 0.5 * (x[j] * x[j] + x[kk] * x[kk] - x[i] * x[i]) + k * x[j] * x[j] * x[kk] * x[kk];
+      // x_j^2 + x_k^2 - x_i^2 = (a - x_i)(a + x_i) + b^2, a = max(x_j, x_k), b = min: a - x_i is exact when
+      // x_i is close to a (the needle's long sides), where x_j^2 + x_k^2 - x_i^2 lost all the bits of
+      // x_i^2 - a^2 (angle errors up to eps x_i / b at the short side's ends)
+      const double a = (std::max)(x[j], x[kk]), b = (std::min)(x[j], x[kk]);
+      num[i] = 0.5 * ((a - x[i]) * (a + x[i]) + b * b) + k * x[j] * x[j] * x[kk] * x[kk];
     }
     return std::isfinite(num[0]) && std::isfinite(num[1]) && std::isfinite(num[2]);
   }
