@@ -291,11 +291,12 @@ CGAL_HC_TEST_CASE(noisy_beam_spherical_maps)
 
 // corner_with_sharp_edge.off (a soup of 18 polygons that stitches into a closed genus-0 mesh of 17 vertices)
 // stretched 30 times along x: before the disk flow of a round was cut at 30 iterations, every one of the 17
-// punctures failed (iteration bound, or a triangulation that is not simplicial). Now the default map is valid,
-// and so is the map with puncture vertex 2, whose disk flows have singular Hessians (an interior vertex with
-// only degenerate triangles) and take Levenberg-Marquardt shifts (the only demo input of the suite that
-// exercises them since the round limit: noisy beam.off needed 38 before it); every puncture gives a map or a
-// Numerical_error.
+// punctures failed (iteration bound, or a triangulation that is not simplicial). Then the default map and 2
+// others were valid, among them puncture vertex 2's. Since the line search rejects overshooting trial points
+// (2026-12-07, evening) 16 of the 17 are. Some of these disk flows have singular Hessians (an interior vertex
+// with only degenerate triangles) and take Levenberg-Marquardt shifts: the only demo input of the suite that
+// exercises them since the round limit (noisy beam.off needed 38 before it), so a valid map that took shifts
+// is required. Every puncture gives a map or a Numerical_error.
 CGAL_HC_TEST_CASE(stretched_corner_every_puncture)
 {
   const Mesh mesh = ricci_test::demo_mesh("corner_with_sharp_edge.off"); // repaired: it is a soup
@@ -304,20 +305,22 @@ CGAL_HC_TEST_CASE(stretched_corner_every_puncture)
   const Mesh m = perturbed(mesh, 2, 0);
   const auto d = RF::spherical_uniformization(m, CGAL::parameters::number_of_iterations(150));
   CGAL_HC_CHECK_MSG(d.converged(), RF::to_string(d.statistics().status) << ", flipped faces " << d.number_of_flipped_faces());
-  std::size_t valid = 0, errors = 0, shifted = 0;
+  std::size_t valid = 0, errors = 0, shifted = 0, valid_shifted = 0;
+  std::string shifted_punctures;
   for(std::size_t p = 0; p < m.number_of_vertices(); ++p) {
     try {
       const auto s = RF::spherical_uniformization(m, RF::parameters::puncture_vertex(p, CGAL::parameters::number_of_iterations(150)));
       if(s.converged()) ++valid;
-      if(p == 2) {
-        CGAL_HC_CHECK_MSG(s.converged(), "puncture 2: " << RF::to_string(s.statistics().status));
-        CGAL_HC_CHECK_MSG(s.statistics().number_of_shifted_factorizations > 0, "puncture 2: no shifted factorization");
-      }
-      shifted += s.statistics().number_of_shifted_factorizations;
+      if(p == 2) CGAL_HC_CHECK_MSG(s.converged(), "puncture 2: " << RF::to_string(s.statistics().status));
+      const std::size_t k = s.statistics().number_of_shifted_factorizations;
+      if(k > 0) shifted_punctures += " " + std::to_string(p) + (s.converged() ? "" : "(invalid)");
+      if(k > 0 && s.converged()) ++valid_shifted;
+      shifted += k;
     } catch(const CGAL::Numerical_error&) { ++errors; }
   }
   std::cout << "  stretched corner_with_sharp_edge.off: " << valid << " of " << m.number_of_vertices() << " punctures valid, "
-            << errors << " numerical errors, " << shifted << " shifted factorizations" << std::endl;
+            << errors << " numerical errors, " << shifted << " shifted factorizations (punctures" << shifted_punctures << ")" << std::endl;
+  CGAL_HC_CHECK_MSG(valid_shifted > 0, "no valid map took a shifted factorization");
 }
 
 // triceratops.off stretched 30 times along x, puncture vertex 0: the disk flow converges (max |K| 1e-11), but
@@ -369,4 +372,26 @@ CGAL_HC_TEST_CASE(stretched_joint_energy_decreases)
   CGAL_HC_CHECK_MSG(st.max_curvature_error < 1e-6, RF::to_string(st.status) << ", max |K| " << st.max_curvature_error);
   std::cout << "  joint.off stretched: " << RF::to_string(st.status) << " after " << st.iterations << " iterations, max |K| "
             << st.max_curvature_error << std::endl;
+}
+
+// The trapezoid can say that the energy fell where it rose: past the minimum on the line, across flips, the
+// gradient grows in kinks. mpi_triang.off (genus 1) stretched 1000 times along x and shrunk 1000 times along z:
+// before the line search rejected trial points whose slope exceeds a quarter of the initial descent rate
+// (`Newton_solver::line_search()`), the flat flow wandered at max |K| 12 to 24 (a scratch driver reading the
+// file directly: FLIP_LIMIT_REACHED after 129 iterations; now STAGNATED at 4.5e-7 after 187). With this test's
+// loader (another vertex order) it now reaches max |K| about 1.4e-6 in 400 iterations, the recorded energy
+// decreasing monotonically; the default bound of 100 iterations is not enough for this mesh
+CGAL_HC_TEST_CASE(stretched_torus_rejects_overshooting_steps)
+{
+  Mesh m = ricci_test::demo_mesh("mpi_triang.off");
+  CGAL_HC_CHECK(!m.is_empty());
+  if(m.is_empty()) return;
+  for(auto v : m.vertices()) { const Point_3 p = m.point(v); m.point(v) = Point_3(1000 * p.x(), p.y(), 0.001 * p.z()); }
+  const auto r = RF::flat_metric(m, CGAL::parameters::number_of_iterations(400));
+  const auto& st = r.statistics();
+  std::cout << "  mpi_triang.off stretched: " << RF::to_string(st.status) << " after " << st.iterations
+            << " iterations, max |K| " << st.max_curvature_error << ", " << st.number_of_flips << " flips" << std::endl;
+  CGAL_HC_CHECK_MSG(st.max_curvature_error < 1e-5, RF::to_string(st.status) << ", max |K| " << st.max_curvature_error);
+  for(std::size_t k = 1; k < st.energy_history.size(); ++k)
+    CGAL_HC_CHECK(st.energy_history[k] <= st.energy_history[k - 1]);
 }
