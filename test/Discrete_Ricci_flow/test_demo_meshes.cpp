@@ -379,8 +379,9 @@ CGAL_HC_TEST_CASE(stretched_joint_energy_decreases)
 // before the line search rejected trial points whose slope exceeds a quarter of the initial descent rate
 // (`Newton_solver::line_search()`), the flat flow wandered at max |K| 12 to 24 (a scratch driver reading the
 // file directly: FLIP_LIMIT_REACHED after 129 iterations; now STAGNATED at 4.5e-7 after 187). With this test's
-// loader (another vertex order) it now reaches max |K| about 1.4e-6 in 400 iterations, the recorded energy
-// decreasing monotonically; the default bound of 100 iterations is not enough for this mesh
+// loader (another vertex order) it now reaches max |K| about 1.4e-6 in 400 iterations; the default bound of 100
+// iterations is not enough for this mesh. (The recorded energy, the sum of the accepted trapezoidal estimates,
+// cannot increase by construction, so it is no check here; the final max |K| is.)
 CGAL_HC_TEST_CASE(stretched_torus_rejects_overshooting_steps)
 {
   Mesh m = ricci_test::demo_mesh("mpi_triang.off");
@@ -392,6 +393,5 @@ CGAL_HC_TEST_CASE(stretched_torus_rejects_overshooting_steps)
   std::cout << "  mpi_triang.off stretched: " << RF::to_string(st.status) << " after " << st.iterations
             << " iterations, max |K| " << st.max_curvature_error << ", " << st.number_of_flips << " flips" << std::endl;
   CGAL_HC_CHECK_MSG(st.max_curvature_error < 1e-5, RF::to_string(st.status) << ", max |K| " << st.max_curvature_error);
-  for(std::size_t k = 1; k < st.energy_history.size(); ++k)
-    CGAL_HC_CHECK(st.energy_history[k] <= st.energy_history[k - 1]);
+  CGAL_HC_CHECK_MSG(st.status != RF::Flow_status::FLIP_LIMIT_REACHED, RF::to_string(st.status));
 }

@@ -229,13 +229,9 @@ public:
   // vertex_scaling_x() and c_j = sqrt(1 + kappa x_j^2) (cosh, cos (l_j / 2), 1)
   bool vertex_scaling_face(const H hs[3], double xs[3], double c[3]) const
   {
+    const bool ok = vertex_scaling_x(hs, xs);
     const double k = kappa();
-    bool ok = true;
-    for(int j = 0; j < 3; ++j) {
-      xs[j] = x[m.edge(hs[j])];
-      c[j] = std::sqrt((std::max)(0.0, 1 + k * xs[j] * xs[j]));
-      if(!(c[j] > 0)) ok = false;
-    }
+    for(int j = 0; j < 3; ++j) c[j] = std::sqrt((std::max)(0.0, 1 + k * xs[j] * xs[j]));
     return ok;
   }
 
