@@ -351,14 +351,14 @@ CGAL_HC_TEST_CASE(stretched_triceratops_layout_is_finite)
   }
 }
 
-// A convex flow never accepts a step that its energy estimate (the trapezoidal rule on the gradients, which
-// `Flow_statistics::energy_history` records) says increased the energy; the independent check is the outcome,
-// the final max |K|. joint.off stretched
-// 1000 times along x and shrunk 1000 times along z (triangles with angles down to 4e-8): before 2026-12-07
-// (later) the line search accepted such steps when the max error decreased, and the flow cycled through the same
-// 10 iterates until MAXIMUM_ITERATIONS (max |K| 3.3); now its energy decreases monotonically and the flow
-// reaches its rounding floor (STAGNATED, max |K| about 3e-8)
-CGAL_HC_TEST_CASE(stretched_joint_energy_decreases)
+// A convex flow never accepts a step that its energy estimate (the trapezoidal rule on the gradients) says
+// increased the energy. joint.off stretched 1000 times along x and shrunk 1000 times along z (triangles with
+// angles down to 4e-8): before 2026-12-07 (later) the line search accepted such steps when the max error
+// decreased, and the flow cycled through the same 10 iterates until MAXIMUM_ITERATIONS (max |K| 3.3); now it
+// reaches its rounding floor (STAGNATED, max |K| about 3e-8). The checks are the outcome: the final max |K| and
+// a status other than the iteration bound. (The recorded `energy_history` is the sum of the accepted estimates,
+// each <= 0 by the acceptance rule: it cannot increase by construction, so it is no check.)
+CGAL_HC_TEST_CASE(stretched_joint_reaches_its_rounding_floor)
 {
   Mesh m = ricci_test::demo_mesh("joint.off");
   CGAL_HC_CHECK(!m.is_empty());
@@ -366,10 +366,8 @@ CGAL_HC_TEST_CASE(stretched_joint_energy_decreases)
   for(auto v : m.vertices()) { const Point_3 p = m.point(v); m.point(v) = Point_3(1000 * p.x(), p.y(), 0.001 * p.z()); }
   const auto r = RF::hyperbolic_uniformization(m);
   const auto& st = r.statistics();
-  for(std::size_t k = 1; k < st.energy_history.size(); ++k)
-    CGAL_HC_CHECK_MSG(st.energy_history[k] <= st.energy_history[k - 1], "iteration " << k << ": energy " << st.energy_history[k]
-                      << " after " << st.energy_history[k - 1]);
   CGAL_HC_CHECK_MSG(st.max_curvature_error < 1e-6, RF::to_string(st.status) << ", max |K| " << st.max_curvature_error);
+  CGAL_HC_CHECK_MSG(st.status != RF::Flow_status::MAXIMUM_ITERATIONS, RF::to_string(st.status));
   std::cout << "  joint.off stretched: " << RF::to_string(st.status) << " after " << st.iterations << " iterations, max |K| "
             << st.max_curvature_error << std::endl;
 }
