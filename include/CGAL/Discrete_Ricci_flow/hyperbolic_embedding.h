@@ -239,11 +239,13 @@ public:
   /// distance of the relator product to the identity as a user measures it: the product of the returned
   /// `deck_transformations()` (double) in the order of `relator()`, multiplied in double, normalized, and the
   /// largest entry difference to the identity matrix up to sign (`Poincare_disk_isometry_2::distance_to`);
-  /// +infinity if the product has a non-positive determinant. For the torus |rotation - 1| + |translation|
-  /// of the product of the periods' translations (long double).
+  /// +infinity if the product has a non-positive determinant. For the torus |rotation - 1| + |translation| /
+  /// (the longer period's length) of the product of the periods' translations (long double): relative, so that
+  /// it does not depend on the mesh's scale (before 2026-12-07 the translation was absolute: about 1e137 for a
+  /// torus of size 1e150).
   double relator_defect() const
   {
-    if(!hyperbolic_) return double(product(relator_word()).defect());
+    if(!hyperbolic_) return defect(product(relator_word()));
     std::vector<Isometry> d;
     try { d = deck_transformations(); } catch(const CGAL::Numerical_error&) { return std::numeric_limits<double>::infinity(); }
     const Isometry m = internal::word_product(d, relator_word(), Isometry());
@@ -254,7 +256,7 @@ public:
 
   /// the same distance for the product of the long-double holonomies, multiplied in long double (what the
   /// embedding's own computation achieves before the rounding of the deck transformations to double)
-  double relator_defect_long_double() const { return double(product(relator_word()).defect()); }
+  double relator_defect_long_double() const { return defect(product(relator_word())); }
 
   /*!
     The deck transformations of the 2g loops as exact isometries (hyperbolic background), in the frame of
@@ -338,7 +340,7 @@ public:
     return r;
   }
   /// the defect of [a1, b1] ... [ag, bg] evaluated on `canonical_deck_transformations()`
-  double canonical_relator_defect() const { return double(canonical_product().defect()); }
+  double canonical_relator_defect() const { return defect(canonical_product()); }
   /// the canonical fundamental polygon: the 4g lifts of the base vertex P_k = w_1 ... w_k (b) along
   /// a1 b1 a1^-1 b1^-1 ..., b = `base_point()`
   std::vector<Complex> canonical_polygon() const { return polygon(canonical_motions(), canonical_relator()); }
@@ -463,6 +465,15 @@ private:
   internal::Motion letter(int l) const { return internal::letter(hol_, l); }
   // the product of the letters of w over the generators g (the deck transformations by default)
   internal::Motion product(const Word& w) const { return product(hol_, w); }
+  // the distance of m to the identity (internal::Motion::defect()); for the flat torus with the translation
+  // measured in units of the longer period
+  double defect(const internal::Motion& m) const
+  {
+    if(hyperbolic_ || hol_.size() != 2) return double(m.defect());
+    const internal::Real scale = (std::max)(std::abs(hol_[0].b), std::abs(hol_[1].b));
+    if(!(scale > 0) || !std::isfinite(scale)) return std::numeric_limits<double>::infinity();
+    return double(internal::Motion::euclidean(m.a, m.b / scale).defect());
+  }
   internal::Motion product(const std::vector<internal::Motion>& g, const Word& w) const
   {
     return internal::word_product(g, w, internal::Motion::identity(hyperbolic_));
