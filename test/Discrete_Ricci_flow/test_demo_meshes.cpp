@@ -399,6 +399,34 @@ CGAL_HC_TEST_CASE(stretched_joint_reaches_its_rounding_floor)
             << st.max_curvature_error << std::endl;
 }
 
+// A failed line search returns to its start, triangulation included: the rejected trials' Ptolemy flips are
+// undone (`Flow_engine::undo_flips()`), not flipped back at the start's u. elk.off (genus 1) stretched 1000
+// times along x and shrunk 1000 times along z, flat metric: far from any solution (u from -1118 to 162 at a
+// trial point) those flips left Penner coordinates from 0 to 6e307, the start's lengths were lost, and after
+// 165 iterations the flow threw "the initial state of the scheme has zero, non-finite or overflowing edge
+// lengths", which was not the cause. It now ends with a failure status (LINE_SEARCH_FAILED after 165
+// iterations) and the last accepted iterate: finite, positive lengths (from 1e-320 to 1e-142 in the input's
+// unit: the flow is far from a metric double arithmetic can represent, and says so by its status).
+CGAL_HC_TEST_CASE(failed_line_search_restores_its_start)
+{
+  Mesh m = ricci_test::demo_mesh("elk.off");
+  CGAL_HC_CHECK(!m.is_empty());
+  if(m.is_empty()) return;
+  for(auto v : m.vertices()) { const Point_3 p = m.point(v); m.point(v) = Point_3(1000 * p.x(), p.y(), 0.001 * p.z()); }
+  try {
+    const auto r = RF::flat_metric(m, CGAL::parameters::number_of_iterations(400));
+    const auto& st = r.statistics();
+    std::cout << "  elk.off stretched: " << RF::to_string(st.status) << " after " << st.iterations << " iterations, max |K| "
+              << st.max_curvature_error << ", " << st.number_of_flips << " flips" << std::endl;
+    CGAL_HC_CHECK_MSG(std::isfinite(st.max_curvature_error), st.max_curvature_error);
+    double lmin = HUGE_VAL, lmax = 0;
+    for(auto e : r.intrinsic_mesh().edges()) { lmin = (std::min)(lmin, r.length(e)); lmax = (std::max)(lmax, r.length(e)); }
+    CGAL_HC_CHECK_MSG(lmin > 0 && std::isfinite(lmax), "lengths in [" << lmin << ", " << lmax << "]");
+  } catch(const CGAL::Numerical_error& e) {
+    CGAL_HC_CHECK_MSG(false, e.what());
+  }
+}
+
 // The trapezoid can say that the energy fell where it rose: past the minimum on the line, across flips, the
 // gradient grows in kinks. mpi_triang.off (genus 1) stretched 1000 times along x and shrunk 1000 times along z:
 // before the line search rejected trial points whose slope exceeds a quarter of the initial descent rate

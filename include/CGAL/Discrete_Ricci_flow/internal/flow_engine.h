@@ -80,6 +80,10 @@ public:
   bool geometric_flips = false;
   std::vector<E> flip_log; // edges flipped, in order
   std::vector<char> in_queue;
+  // while `record_undo`: the flips made since, each with the edge's Penner coordinate before it, so that
+  // `undo_flips()` can return to the triangulation of that moment (a line search's start)
+  bool record_undo = false;
+  std::vector<std::pair<E, double> > undo_log;
 
   Flow_engine(Mesh& mesh, Background_geometry g, Scheme s, bool flips_on)
     : m(mesh), geo(g), scheme(s), use_flips(flips_on && s == Scheme::VERTEX_SCALING)
@@ -295,6 +299,7 @@ public:
     // h1: b->c, h2: c->a, o1: a->d, o2: d->b
     const double lab = edge_data[e], lbc = edge_data[m.edge(h1)], lca = edge_data[m.edge(h2)],
                  lad = edge_data[m.edge(o1)], ldb = edge_data[m.edge(o2)];
+    if(record_undo) undo_log.emplace_back(e, lab);
     if(geometric_flips) {
       // the diagonal c-d of the quad unfolded along a-b (lambda = l / 2 in E^2)
       edge_data[e] = 0.5 * euclidean_flip_diagonal(length(e), length(m.edge(h1)), length(m.edge(h2)),
@@ -306,6 +311,21 @@ public:
     update_length(e);
     update_face_angles(fh); update_face_angles(fo);
     ++flips; ++pattern_version;
+  }
+
+  // undoes the flips of `undo_log` (latest first): the connectivity (a flip has order 4: three more restore
+  // each halfedge's next, target and face), the Penner coordinates exactly, and `flip_log`; the derived caches
+  // (lengths, angles, curvatures) are left to the caller's next evaluation. `flips` still counts them (work).
+  void undo_flips()
+  {
+    for(auto it = undo_log.rbegin(); it != undo_log.rend(); ++it) {
+      for(int k = 0; k < 3; ++k) flip_connectivity(m, it->first);
+      edge_data[it->first] = it->second;
+      CGAL_assertion(!flip_log.empty() && flip_log.back() == it->first);
+      flip_log.pop_back();
+      ++pattern_version;
+    }
+    undo_log.clear();
   }
 
   void push(E e) { if(!in_queue[e] && !e_is_border[e]) { in_queue[e] = 1; flip_queue.push_back(e); } }

@@ -540,6 +540,7 @@ private:
     // 100), and the hyperbolic demo meshes and their perturbed copies take fewer iterations (scratch sweep of
     // 76 flows: 754 -> 650 in all; 3 of them take 1 to 6 more)
     const double overshoot_ratio = 0.25;
+    eng_.undo_log.clear(); eng_.record_undo = true; // (the trials' flips, undone by restore())
     while(t > 1e-12) {
       for(int i = 0; i < n_; ++i) eng_.u[i] = u_old_[i] + t * delta_[i];
       double e2 = 0;
@@ -552,7 +553,7 @@ private:
         const bool ok = strict ? e2 < err_old
                                : !overshoot && ((slope0 < 0 && de <= 1e-4 * t * slope0) ||
                                                 (e2 < err_old * (1 - 1e-4 * t) && !(convex() && de > 0)));
-        if(ok) { err = e2; energy_ += de; return true; }
+        if(ok) { err = e2; energy_ += de; eng_.record_undo = false; eng_.undo_log.clear(); return true; }
       }
       if(strict) break;
       t *= 0.5;
@@ -562,11 +563,29 @@ private:
     return false;
   }
 
+  // back to the line search's start u_old: the Delaunay flips at u_old take the rejected trials' flips back
+  // (Ptolemy: the same Penner coordinates up to rounding; on meshes stretched 1000 times not quite the same
+  // state: femur.off's error went 706 -> 757). Where that fails, every flip since the line search's start is
+  // undone exactly (`Flow_engine::undo_flips()`):
+  // - the trials' Penner coordinates under- or overflowed, and the lengths at u_old are lost (elk.off stretched
+  //   1000 times along x and shrunk along z, flat metric: u in [-1118, 162] at a trial point, lambda0 from 0
+  //   to 6e307; after 165 iterations the flow threw "the initial state ... has zero, non-finite or
+  //   overflowing edge lengths" instead of ending with LINE_SEARCH_FAILED at its last accepted iterate);
+  // - the flip bound stops the flips back (femur.off stretched: FLIP_LIMIT_REACHED reported max error 0).
+  // Undoing always, instead of the flips back, changes the rounding of the restored state: on the demo meshes
+  // it made more stretched genus-0 maps fail (dragknob.off stretched 30 times, 3 punctures of the stretched
+  // corner), so it is the fallback only.
   void restore(double& err, double err_old)
   {
     eng_.u = u_old_;
     double e2 = 0;
-    evaluate(e2);
+    if(!evaluate(e2) || !std::isfinite(e2)) { // (u is still u_old)
+      eng_.undo_flips();
+      e2 = 0;
+      evaluate(e2);
+    }
+    eng_.record_undo = false;
+    eng_.undo_log.clear();
     err = std::isfinite(e2) ? e2 : err_old;
   }
 
