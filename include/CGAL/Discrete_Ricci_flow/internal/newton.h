@@ -553,7 +553,7 @@ private:
         const bool ok = strict ? e2 < err_old
                                : !overshoot && ((slope0 < 0 && de <= 1e-4 * t * slope0) ||
                                                 (e2 < err_old * (1 - 1e-4 * t) && !(convex() && de > 0)));
-        if(ok) { err = e2; energy_ += de; eng_.record_undo = false; eng_.undo_log.clear(); return true; }
+        if(ok) { err = e2; energy_ += de; eng_.stop_recording_flips(); return true; }
       }
       if(strict) break;
       t *= 0.5;
@@ -584,8 +584,7 @@ private:
       e2 = 0;
       evaluate(e2);
     }
-    eng_.record_undo = false;
-    eng_.undo_log.clear();
+    eng_.stop_recording_flips();
     err = std::isfinite(e2) ? e2 : err_old;
   }
 
