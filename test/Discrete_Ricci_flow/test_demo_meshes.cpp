@@ -404,9 +404,9 @@ CGAL_HC_TEST_CASE(stretched_joint_reaches_its_rounding_floor)
 // times along x and shrunk 1000 times along z, flat metric: far from any solution (u from -1118 to 162 at a
 // trial point) those flips left Penner coordinates from 0 to 6e307, the start's lengths were lost, and after
 // 165 iterations the flow threw "the initial state of the scheme has zero, non-finite or overflowing edge
-// lengths", which was not the cause. It now ends with a failure status (LINE_SEARCH_FAILED after 165
-// iterations) and the last accepted iterate: finite, positive lengths (from 1e-320 to 1e-142 in the input's
-// unit: the flow is far from a metric double arithmetic can represent, and says so by its status).
+// lengths", which was not the cause. It now ends with a failure status and its last accepted iterate: finite,
+// positive lengths whose angle sums are the reported error (LINE_SEARCH_FAILED at max |K| 5.6: the flow is far
+// from a metric double arithmetic can represent, and says so by its status).
 CGAL_HC_TEST_CASE(failed_line_search_restores_its_start)
 {
   Mesh m = ricci_test::demo_mesh("elk.off");
@@ -422,6 +422,10 @@ CGAL_HC_TEST_CASE(failed_line_search_restores_its_start)
     double lmin = HUGE_VAL, lmax = 0;
     for(auto e : r.intrinsic_mesh().edges()) { lmin = (std::min)(lmin, r.length(e)); lmax = (std::max)(lmax, r.length(e)); }
     CGAL_HC_CHECK_MSG(lmin > 0 && std::isfinite(lmax), "lengths in [" << lmin << ", " << lmax << "]");
+    // the returned metric is the state the flow reports: its angle sums (Discrete_metric::curvature(), from
+    // the returned lengths) give the reported error (before the usable-length bound: 23.935 against 23.946)
+    const double k = max_abs_curvature(r);
+    CGAL_HC_CHECK_MSG(std::abs(k - st.max_curvature_error) <= 1e-9 * (1 + k), "max |K| " << k << ", reported " << st.max_curvature_error);
   } catch(const CGAL::Numerical_error& e) {
     CGAL_HC_CHECK_MSG(false, e.what());
   }

@@ -510,6 +510,70 @@ CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
   }
 }
 
+// Flow_engine::undo_flips() returns to the triangulation where the recording started: every halfedge's next,
+// target and face, the face and vertex anchors, and the Penner coordinates, exactly (a flip has order 4), so
+// that the curvatures are those of the start to the last bit. And the line search's fallback
+// (Newton_solver::restore()): with a flip bound that the first trial exhausts, the flips back at the start's u
+// cannot run either; the flow must then end at its start, with the start's error. Before the fallback the
+// restore left the trial's flips and reported max error 0 (femur.off stretched 1000 times: FLIP_LIMIT_REACHED,
+// "max error 0").
+CGAL_HC_TEST_CASE(undo_flips_restores_the_triangulation)
+{
+  const Mesh input = read_cgal("eight.off");
+  Mesh mm = input;
+  RF::internal::Flow_engine<Point_3> eng(mm, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, true);
+  double mean = 0;
+  for(auto e : mm.edges()) mean += std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
+  mean /= double(mm.number_of_edges());
+  for(auto e : mm.edges()) // edges of about 0.6 hyperbolic units
+    eng.edge_data[e] = 0.3 / mean * std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
+  eng.compute_lengths(); eng.compute_angles();
+  CGAL_HC_CHECK(eng.make_delaunay());
+  eng.compute_curvature();
+  auto connectivity = [&]() {
+    std::vector<long> c;
+    for(auto h : mm.halfedges()) { c.push_back(long(mm.next(h))); c.push_back(long(mm.target(h))); c.push_back(long(mm.face(h))); }
+    for(auto f : mm.faces()) c.push_back(long(mm.halfedge(f)));
+    for(auto v : mm.vertices()) c.push_back(long(mm.halfedge(v)));
+    return c;
+  };
+  const std::vector<long> c0 = connectivity();
+  const std::vector<double> lambda0 = eng.edge_data, K0 = eng.K;
+  const std::size_t log0 = eng.flip_log.size();
+  // a far point: many flips
+  eng.record_undo = true;
+  for(std::size_t i = 0; i < eng.u.size(); ++i) eng.u[i] = 1.5 * std::sin(1.3 * double(i));
+  eng.compute_lengths(); eng.compute_angles();
+  CGAL_HC_CHECK(eng.make_delaunay());
+  const std::size_t n = eng.undo_log.size();
+  CGAL_HC_CHECK_MSG(n >= 20 && eng.flip_log.size() == log0 + n, n << " flips recorded");
+  std::fill(eng.u.begin(), eng.u.end(), 0.0);
+  eng.undo_flips();
+  eng.stop_recording_flips();
+  CGAL_HC_CHECK(connectivity() == c0);
+  CGAL_HC_CHECK(eng.edge_data == lambda0);
+  CGAL_HC_CHECK(eng.flip_log.size() == log0 && eng.undo_log.empty() && !eng.record_undo);
+  const std::size_t flips = eng.flips;
+  eng.compute_lengths(); eng.compute_angles();
+  CGAL_HC_CHECK(eng.make_delaunay());
+  eng.compute_curvature();
+  CGAL_HC_CHECK(eng.flips == flips); // (still Delaunay: nothing to flip)
+  CGAL_HC_CHECK(eng.K == K0);
+  std::cout << "  eight.off: " << n << " flips undone" << std::endl;
+
+  // the fallback: the first trial point exhausts the flip bound
+  double err0 = 0;
+  for(std::size_t i = 0; i < K0.size(); ++i) err0 = (std::max)(err0, std::abs(K0[i] - eng.target[i]));
+  eng.max_flips = eng.flips + 1;
+  RF::Flow_statistics st;
+  RF::internal::Newton_solver<Point_3>(eng, RF::internal::Newton_options(), st).run();
+  CGAL_HC_CHECK_MSG(st.status == RF::Flow_status::FLIP_LIMIT_REACHED, RF::to_string(st.status));
+  CGAL_HC_CHECK_MSG(st.max_curvature_error == err0, "reported " << st.max_curvature_error << ", start " << err0);
+  CGAL_HC_CHECK(connectivity() == c0);
+  CGAL_HC_CHECK(eng.edge_data == lambda0);
+  CGAL_HC_CHECK(std::all_of(eng.u.begin(), eng.u.end(), [](double v) { return v == 0; }));
+}
+
 // the default solver: SimplicialLDLT below 100,000 vertices, CHOLMOD (when configured) from there; an explicit
 // choice is kept; the flow reports the solver it used
 CGAL_HC_TEST_CASE(default_solver_by_size)

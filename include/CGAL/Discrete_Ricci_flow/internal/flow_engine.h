@@ -80,10 +80,13 @@ public:
   bool geometric_flips = false;
   std::vector<E> flip_log; // edges flipped, in order
   std::vector<char> in_queue;
-  // while `record_undo`: the flips made since, each with the edge's Penner coordinate before it, so that
-  // `undo_flips()` can return to the triangulation of that moment (a line search's start)
+  // while `record_undo`: the flips made since, each with the edge's Penner coordinate and the halfedge anchors
+  // of its two faces and two ends before it, so that `undo_flips()` can return to the triangulation of that
+  // moment (a line search's start) exactly, face anchors included (they fix the corner order of the face
+  // functions, hence their rounding)
+  struct Undo_record { E e; double lambda; F f[2]; H fh[2]; V v[2]; H vh[2]; };
   bool record_undo = false;
-  std::vector<std::pair<E, double> > undo_log;
+  std::vector<Undo_record> undo_log;
 
   Flow_engine(Mesh& mesh, Background_geometry g, Scheme s, bool flips_on)
     : m(mesh), geo(g), scheme(s), use_flips(flips_on && s == Scheme::VERTEX_SCALING)
@@ -299,7 +302,10 @@ public:
     // h1: b->c, h2: c->a, o1: a->d, o2: d->b
     const double lab = edge_data[e], lbc = edge_data[m.edge(h1)], lca = edge_data[m.edge(h2)],
                  lad = edge_data[m.edge(o1)], ldb = edge_data[m.edge(o2)];
-    if(record_undo) undo_log.emplace_back(e, lab);
+    if(record_undo) {
+      const V a = m.target(o), b = m.target(h);
+      undo_log.push_back(Undo_record{e, lab, {fh, fo}, {m.halfedge(fh), m.halfedge(fo)}, {a, b}, {m.halfedge(a), m.halfedge(b)}});
+    }
     if(geometric_flips) {
       // the diagonal c-d of the quad unfolded along a-b (lambda = l / 2 in E^2)
       edge_data[e] = 0.5 * euclidean_flip_diagonal(length(e), length(m.edge(h1)), length(m.edge(h2)),
@@ -314,25 +320,27 @@ public:
   }
 
   // undoes the flips of `undo_log` (latest first): the connectivity (a flip has order 4: three more restore
-  // each halfedge's next, target and face), the Penner coordinates exactly, and `flip_log`; the derived caches
-  // (lengths, angles, curvatures) are left to the caller's next evaluation. `flips` still counts them (work).
+  // each halfedge's next, target and face), the face and vertex anchors, the Penner coordinates exactly, and
+  // `flip_log`; the derived caches (lengths, angles, curvatures) are left to the caller's next evaluation.
+  // `flips` still counts them (work).
   void undo_flips()
   {
     for(auto it = undo_log.rbegin(); it != undo_log.rend(); ++it) {
-      for(int k = 0; k < 3; ++k) flip_connectivity(m, it->first);
-      edge_data[it->first] = it->second;
-      CGAL_assertion(!flip_log.empty() && flip_log.back() == it->first);
+      for(int k = 0; k < 3; ++k) flip_connectivity(m, it->e);
+      for(int k = 0; k < 2; ++k) { m.set_halfedge(it->f[k], it->fh[k]); m.set_halfedge(it->v[k], it->vh[k]); }
+      edge_data[it->e] = it->lambda;
+      CGAL_assertion(!flip_log.empty() && flip_log.back() == it->e);
       flip_log.pop_back();
       ++pattern_version;
     }
     undo_log.clear();
   }
   // ends the recording and frees the log (at 2.6M faces a line search's trials flip about 10^5 to 10^6 edges:
-  // up to 16 MB that the next factorization, the flow's peak, would otherwise hold)
+  // up to 48 MB that the next factorization, the flow's peak, would otherwise hold)
   void stop_recording_flips()
   {
     record_undo = false;
-    std::vector<std::pair<E, double> >().swap(undo_log);
+    std::vector<Undo_record>().swap(undo_log);
   }
 
   void push(E e) { if(!in_queue[e] && !e_is_border[e]) { in_queue[e] = 1; flip_queue.push_back(e); } }
@@ -382,20 +390,30 @@ public:
       if(!m.is_border(h)) K[m.target(m.next(h))] -= angle[h];
   }
 
-  // false if a length is zero, not finite, or (H^2) so long that cosh overflows in the angle formulas
-  // (vertex scaling H^2: 0 < 2 asinh(x) < 600, tested on x)
+  // false if a length is below `min_usable_length`, not finite, or (H^2) so long that cosh overflows in the
+  // angle formulas (vertex scaling H^2: 2 asinh(x) < 600, tested on x)
   bool lengths_are_usable() const
   {
     const bool hyperbolic = geo == Background_geometry::HYPERBOLIC;
     if(scheme == Scheme::VERTEX_SCALING && hyperbolic) {
       static const double x_limit = std::sinh(300.0);
-      for(E e : m.edges()) if(!(x[e] > 0 && x[e] < x_limit)) return false;
+      for(E e : m.edges()) if(!(x[e] >= min_usable_length && x[e] < x_limit)) return false;
       return true;
     }
     const double limit = hyperbolic ? 600.0 : HUGE_VAL;
-    for(E e : m.edges()) { const double l = length(e); if(!(l > 0 && l < limit)) return false; }
+    for(E e : m.edges()) { const double l = length(e); if(!(l >= min_usable_length && l < limit)) return false; }
     return true;
   }
+  // The face formulas multiply up to four lengths (Heron's 16 area^2): below 1e-77 these products underflow,
+  // and the angles of a face of such edges depend on the unit they are computed in. The flow runs in units of
+  // about the mean length (H^2, S^2: absolute lengths of order 1), so a state with a shorter edge is no metric
+  // it can continue from. Before (2026-12-07, night) only zero lengths were: elk.off stretched 1000 times,
+  // flat metric, wandered into lengths of 1e-323, and its last iterate's angle sums from the returned lengths
+  // (times the unit 2048) said max |K| 23.935 where the flow reported 23.946; now it stops at 5.63, which the
+  // returned metric confirms to 1e-12 (test `failed_line_search_restores_its_start`). Every flow of the demo
+  // meshes that converged still does; anchor_dense and femur stretched 1000 times (H^2) end with
+  // LINE_SEARCH_FAILED at max |K| 4.6 and 5.9 instead of 27.5 (iteration bound) and 757 (flip bound)
+  static constexpr double min_usable_length = 1e-77;
 
   // true if a face violates a triangle inequality (its angles are Luo's extension (pi, 0, 0))
   bool has_degenerate_face() const

@@ -572,6 +572,8 @@ private:
   //   to 6e307; after 165 iterations the flow threw "the initial state ... has zero, non-finite or
   //   overflowing edge lengths" instead of ending with LINE_SEARCH_FAILED at its last accepted iterate);
   // - the flip bound stops the flips back (femur.off stretched: FLIP_LIMIT_REACHED reported max error 0).
+  //   (Since the usable-length bound, `Flow_engine::min_usable_length`, those two flows stop earlier; test
+  //   `undo_flips_restores_the_triangulation` exhausts the flip bound in a first trial.)
   // Undoing always, instead of the flips back, changes the rounding of the restored state: on the demo meshes
   // it made more stretched genus-0 maps fail (dragknob.off stretched 30 times, 3 punctures of the stretched
   // corner), so it is the fallback only.
