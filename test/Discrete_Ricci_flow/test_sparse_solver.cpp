@@ -460,20 +460,25 @@ CGAL_HC_TEST_CASE(needle_angles_match_an_exact_reference)
   mpfr_clears(a, b, t, (mpfr_ptr)0);
 }
 
+// Penner coordinates of the Euclidean lengths of mm scaled to a mean of 0.6 (hyperbolic units)
+static void hyperbolic_start(const Mesh& mm, RF::internal::Flow_engine<Point_3>& eng)
+{
+  auto len = [&](Mesh::Edge_index e) {
+    return std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
+  };
+  double mean = 0;
+  for(auto e : mm.edges()) mean += len(e);
+  mean /= double(mm.number_of_edges());
+  for(auto e : mm.edges()) eng.edge_data[e] = 0.3 / mean * len(e);
+}
+
 CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
 {
   const Mesh input = read_cgal("eight.off");
-  auto start = [&](Mesh& mm, RF::internal::Flow_engine<Point_3>& eng) {
-    double mean = 0;
-    for(auto e : mm.edges()) mean += std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
-    mean /= double(mm.number_of_edges());
-    for(auto e : mm.edges()) // edges of about 0.6 hyperbolic units
-      eng.edge_data[e] = 0.3 / mean * std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
-  };
   {
     Mesh mm = input;
     RF::internal::Flow_engine<Point_3> eng(mm, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, true);
-    start(mm, eng);
+    hyperbolic_start(mm, eng);
     for(std::size_t i = 0; i < eng.u.size(); ++i) eng.u[i] = 0.05 * std::sin(0.7 * double(i)); // flips happen
     eng.compute_lengths(); eng.compute_angles();
     CGAL_HC_CHECK(eng.make_delaunay());
@@ -496,7 +501,7 @@ CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
     for(int k = 0; k < 2; ++k) {
       Mesh mm = input;
       RF::internal::Flow_engine<Point_3> eng(mm, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, true);
-      start(mm, eng);
+      hyperbolic_start(mm, eng);
       RF::internal::Newton_options o;
       o.solver = s;
       if(k == 1) o.release_caches_from = 0;
@@ -522,11 +527,7 @@ CGAL_HC_TEST_CASE(undo_flips_restores_the_triangulation)
   const Mesh input = read_cgal("eight.off");
   Mesh mm = input;
   RF::internal::Flow_engine<Point_3> eng(mm, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, true);
-  double mean = 0;
-  for(auto e : mm.edges()) mean += std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
-  mean /= double(mm.number_of_edges());
-  for(auto e : mm.edges()) // edges of about 0.6 hyperbolic units
-    eng.edge_data[e] = 0.3 / mean * std::sqrt(CGAL::squared_distance(mm.point(mm.source(mm.halfedge(e))), mm.point(mm.target(mm.halfedge(e)))));
+  hyperbolic_start(mm, eng);
   eng.compute_lengths(); eng.compute_angles();
   CGAL_HC_CHECK(eng.make_delaunay());
   eng.compute_curvature();
