@@ -348,8 +348,7 @@ typename Mesh::Face_index degenerate_face(const Mesh& m, const std::vector<doubl
            << ", " << unit * l[2] << ")";
         msg = os.str(); bad = f;
       }
-    const double a2 = s * (s - l[0]) * (s - l[1]) * (s - l[2]);
-    area += a2 > 0 ? std::sqrt(a2) : 0.0;
+    area += triangle_area(Background_geometry::EUCLIDEAN, l, nullptr);
   }
   return bad;
 }

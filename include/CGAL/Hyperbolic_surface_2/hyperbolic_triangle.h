@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace CGAL {
 namespace Hyperbolic_surface_2 {
@@ -27,9 +28,37 @@ bool is_hyperbolic_triangle(FT a, FT b, FT c)
 }
 
 /// \ingroup PkgHyperbolicSurface2Ref
+/// The half perimeter s = (a+b+c)/2 of a triangle with side lengths `a`, `b`, `c` (of any geometry) and the
+/// differences s-a, s-b, s-c, in Kahan's order (W. Kahan, "Miscalculating area and angles of a needle-like
+/// triangle", 2014): with the sides sorted, p >= q >= r, 2(s-p) = r - (p - q), 2(s-q) = r + (p - q),
+/// 2(s-r) = p + (q - r), where p - q is exact whenever it cancels. In floating point each result is within a
+/// few ulps of its exact value for these inputs, also when the triangle is nearly flat (s - p tiny), where
+/// s - p computed from a rounded s keeps only an absolute error of about eps s (the angles of the half-angle
+/// formulas then lose up to half their digits: 1e-6 in double, measured). A violated triangle inequality
+/// gives a negative difference. Cost: O(1).
+template <class FT>
+void half_perimeter_differences(FT a, FT b, FT c, FT& s, FT& sa, FT& sb, FT& sc)
+{
+  FT* d[3] = {&sa, &sb, &sc};
+  const FT l[3] = {a, b, c};
+  int p = 0, q = 1, r = 2; // indices of the sides sorted decreasingly
+  if(l[p] < l[q]) std::swap(p, q);
+  if(l[q] < l[r]) std::swap(q, r);
+  if(l[p] < l[q]) std::swap(p, q);
+  const FT pq = l[p] - l[q];
+  s = (l[p] + (l[q] + l[r])) / 2;
+  *d[p] = (l[r] - pq) / 2;
+  *d[q] = (l[r] + pq) / 2;
+  *d[r] = (l[p] + (l[q] - l[r])) / 2;
+}
+
+/// \ingroup PkgHyperbolicSurface2Ref
 /// The angle opposite side `a` of the hyperbolic triangle with sides `a`, `b`, `c`, by the half-angle
 /// formula tan(alpha/2) = sqrt(sinh(s-b) sinh(s-c) / (sinh(s) sinh(s-a))), s = (a+b+c)/2: accurate to a few
-/// ulps for tiny, needle and cap triangles, where acos of the cosine law loses half the digits.
+/// ulps for tiny and needle triangles, where acos of the cosine law loses half the digits. Nearly flat (cap)
+/// triangles lose more: s - a is computed from a rounded s, and the angles of caps were measured up to 1.7e-6
+/// off in double (`half_perimeter_differences()` does not have that error; see the user manual, section
+/// "Stable formulas", for why this function does not use it yet).
 /// Degenerate triangles (an equality in the triangle inequality) give 0 or pi; the result is NaN when the
 /// inequality is violated. Cost: O(1).
 template <class FT>
