@@ -542,7 +542,7 @@ CGAL_HC_TEST_CASE(derived_caches_released_during_factorization)
 // (Newton_solver::restore()): with a flip bound that the first trial exhausts, the flips back at the start's u
 // cannot run either; the flow must then end at its start, with the start's error. Before the fallback the
 // restore left the trial's flips and reported max error 0 (femur.off stretched 1000 times: FLIP_LIMIT_REACHED,
-// "max error 0").
+// "max error 0"). The same when the flow's first evaluation reaches the bound.
 CGAL_HC_TEST_CASE(undo_flips_restores_the_triangulation)
 {
   const Mesh input = read_cgal("eight.off");
@@ -594,6 +594,24 @@ CGAL_HC_TEST_CASE(undo_flips_restores_the_triangulation)
   CGAL_HC_CHECK(connectivity() == c0);
   CGAL_HC_CHECK(eng.edge_data == lambda0);
   CGAL_HC_CHECK(std::all_of(eng.u.begin(), eng.u.end(), [](double v) { return v == 0; }));
+
+  // the flip bound reached by the flow's first evaluation (no flip allowed, a start that is not Delaunay): the
+  // flow reports the error of the state it returns (before: 0)
+  Mesh m2 = input;
+  RF::internal::Flow_engine<Point_3> eng2(m2, Geo::HYPERBOLIC, RF::Scheme::VERTEX_SCALING, true);
+  hyperbolic_start(m2, eng2);
+  for(std::size_t i = 0; i < eng2.u.size(); ++i) eng2.u[i] = 0.05 * std::sin(0.7 * double(i)); // not Delaunay
+  eng2.compute_lengths(); eng2.compute_angles(); eng2.compute_curvature();
+  std::size_t not_delaunay = 0;
+  for(auto e : m2.edges()) if(!eng2.is_delaunay(e)) ++not_delaunay;
+  double err2 = 0;
+  for(std::size_t i = 0; i < eng2.K.size(); ++i) err2 = (std::max)(err2, std::abs(eng2.K[i] - eng2.target[i]));
+  CGAL_HC_CHECK_MSG(not_delaunay > 0, not_delaunay);
+  eng2.max_flips = eng2.flips;
+  RF::Flow_statistics st2;
+  RF::internal::Newton_solver<Point_3>(eng2, RF::internal::Newton_options(), st2).run();
+  CGAL_HC_CHECK_MSG(st2.status == RF::Flow_status::FLIP_LIMIT_REACHED, RF::to_string(st2.status));
+  CGAL_HC_CHECK_MSG(st2.max_curvature_error == err2 && err2 > 0, "reported " << st2.max_curvature_error << ", start " << err2);
 }
 
 // the default solver: SimplicialLDLT below 100,000 vertices, CHOLMOD (when configured) from there; an explicit

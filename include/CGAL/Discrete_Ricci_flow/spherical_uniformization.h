@@ -319,6 +319,7 @@ sphere_flow(CGAL::Surface_mesh<Point_3>& m, typename CGAL::Surface_mesh<Point_3>
     eng.reset(new Flow_engine<Point_3>(disk, Background_geometry::EUCLIDEAN, Scheme::VERTEX_SCALING, true));
     for(auto e : disk.edges()) eng->edge_data[e] = dlam[e];
     Newton_options o = options;
+    o.return_to_start_on_failure = false; // (see Newton_solver::return_to_start())
     // the iteration bound is for all rounds together
     o.max_iterations = (std::min)(options.max_iterations - st.iterations, round_iterations);
     o.fixed.assign(disk.number_of_vertices(), 0);

@@ -296,6 +296,10 @@ struct Newton_options
   bool reuse_factorization = true;
   /// the largest change of a conformal factor in the first trial of a line search (see `line_search`)
   double max_step = 8.0;
+  /// a step that fails returns to its start exactly, the last accepted iterate (see `return_to_start()`);
+  /// false: the flow ends in the state of its last restore (the rounds of the disk flow of
+  /// `spherical_uniformization()`, each a warm start of the next)
+  bool return_to_start_on_failure = true;
 };
 
 template <class Point_3>
@@ -313,8 +317,10 @@ public:
   void run()
   {
     double err = 0;
-    if(!evaluate(err)) st_.status = Flow_status::FLIP_LIMIT_REACHED;
-    else if(!std::isfinite(err)) st_.status = Flow_status::NUMERICAL_FAILURE;
+    if(!evaluate(err)) { // (the flip bound: the error of the state reached, as returned)
+      st_.status = Flow_status::FLIP_LIMIT_REACHED;
+      evaluate(err, false);
+    } else if(!std::isfinite(err)) st_.status = Flow_status::NUMERICAL_FAILURE;
     else st_.status = Flow_status::MAXIMUM_ITERATIONS;
     st_.error_history.push_back(err);
     st_.energy_history.push_back(0.0);
@@ -342,12 +348,13 @@ public:
   }
 
 private:
-  // lengths, angles, flips, curvature and the gradient g = K - target at the current u
-  bool evaluate(double& max_err)
+  // lengths, angles, flips (unless `flips` is false), curvature and the gradient g = K - target at the
+  // current u
+  bool evaluate(double& max_err, bool flips = true)
   {
     eng_.compute_lengths();
     eng_.compute_angles();
-    if(!eng_.make_delaunay()) return false;
+    if(flips && !eng_.make_delaunay()) return false;
     eng_.compute_curvature();
     max_err = 0;
     for(int i = 0; i < n_; ++i) {
@@ -484,8 +491,8 @@ private:
     return false;
   }
 
-  // one damped Newton step; on failure sets the status and restores the previous state. `strict`: accept
-  // only a decrease of the max error (polishing)
+  // one damped Newton step; on failure sets the status and returns to the state it started from, exactly.
+  // `strict`: accept only a decrease of the max error (polishing)
   bool step(double& err, double& t, bool strict)
   {
     // a polishing step (strict) near the rounding level only with the kept factorization (Newton_options::polish)
@@ -493,20 +500,44 @@ private:
       if(!strict) st_.status = Flow_status::NUMERICAL_FAILURE;
       return false;
     }
+    // every flip from here on is recorded (the line searches' trials and the flips back of their restores),
+    // so that a step that fails returns to its start (`return_to_start()`)
+    eng_.undo_log.clear(); eng_.record_undo = true;
     if(line_search(err, t, strict)) return true;
     // an inexact direction that the line search rejects: once more with a new factorization
     if(from_cg_ && !strict && st_.status == Flow_status::LINE_SEARCH_FAILED) {
       st_.status = Flow_status::MAXIMUM_ITERATIONS;
-      if(!direction(err, true)) { st_.status = Flow_status::NUMERICAL_FAILURE; return false; }
+      if(!direction(err, true)) { st_.status = Flow_status::NUMERICAL_FAILURE; return return_to_start(err); }
       if(line_search(err, t, strict)) return true;
     }
     // a shifted (Levenberg-Marquardt) direction that the line search rejects: the Hessian missed the
     // curvature of the degenerate triangles, which grows fast as they open; a larger shift (shorter step)
     while(shift_ > 0 && !strict && st_.status == Flow_status::LINE_SEARCH_FAILED) {
       st_.status = Flow_status::MAXIMUM_ITERATIONS;
-      if(!direction(err, true, true, 1e3 * shift_)) { st_.status = Flow_status::LINE_SEARCH_FAILED; return false; }
+      if(!direction(err, true, true, 1e3 * shift_)) { st_.status = Flow_status::LINE_SEARCH_FAILED; return return_to_start(err); }
       if(line_search(err, t, strict)) return true;
     }
+    return return_to_start(err);
+  }
+
+  // a step failed: back to the state it started from (the last accepted iterate, which the flow returns), by
+  // undoing every flip since (`Flow_engine::undo_flips()`), evaluated without flips; returns false. The
+  // restores between the step's line searches take the flips back instead (`restore()`), and in the disk
+  // flows of `spherical_uniformization()` (degenerate boundary triangles) those regularly end in another
+  // state, with an error 1.03 to 21 times the start's (stretched genus-0 demo meshes); the retries start from
+  // there, and returning them to the exact start instead made dragknob.off stretched 30 times fail. So only the
+  // end of a failed step is exact: before, the flow returned the last restored state (anchor.off stretched 1000
+  // times, H^2: its last line search started at max |K| 24.8, and the flow returned a state at 84.4; test
+  // `failed_line_search_returns_the_last_iterate`). The disk flow's rounds keep the last restored state
+  // (`Newton_options::return_to_start_on_failure`): a round's end is the warm start of the next, not a result,
+  // and with the exact start dragknob.off stretched 30 times failed there too (scratch sweep, 2026-12-07)
+  bool return_to_start(double& err)
+  {
+    if(!o_.return_to_start_on_failure) { eng_.stop_recording_flips(); return false; }
+    eng_.u = u_old_;
+    eng_.undo_flips();
+    eng_.stop_recording_flips();
+    evaluate(err, false);
     return false;
   }
 
@@ -540,7 +571,6 @@ private:
     // 100), and the hyperbolic demo meshes and their perturbed copies take fewer iterations (scratch sweep of
     // 76 flows: 754 -> 650 in all; 3 of them take 1 to 6 more)
     const double overshoot_ratio = 0.25;
-    eng_.undo_log.clear(); eng_.record_undo = true; // (the trials' flips, undone by restore())
     while(t > 1e-12) {
       for(int i = 0; i < n_; ++i) eng_.u[i] = u_old_[i] + t * delta_[i];
       double e2 = 0;
@@ -574,20 +604,25 @@ private:
   // - the flip bound stops the flips back (femur.off stretched: FLIP_LIMIT_REACHED reported max error 0).
   //   (Since the usable-length bound, `Flow_engine::min_usable_length`, those two flows stop earlier; test
   //   `undo_flips_restores_the_triangulation` exhausts the flip bound in a first trial.)
-  // Undoing always, instead of the flips back, changes the rounding of the restored state: on the demo meshes
-  // it made more stretched genus-0 maps fail (dragknob.off stretched 30 times, 3 punctures of the stretched
-  // corner), so it is the fallback only.
+  // Undoing always, instead of the flips back, changes the state the step's next line search starts from: on
+  // the demo meshes it made more stretched genus-0 maps fail (dragknob.off stretched 30 times, 3 punctures of
+  // the stretched corner), so it is the fallback only; a step that fails in the end returns to its start
+  // exactly (`return_to_start()`).
   void restore(double& err, double err_old)
   {
     eng_.u = u_old_;
     double e2 = 0;
     if(!evaluate(e2) || !std::isfinite(e2)) { // (u is still u_old)
       eng_.undo_flips();
+      // the start's own triangulation, evaluated without flips: it was accepted after its Delaunay flips, but
+      // an edge just flipped is not tested again (near-degenerate triangles would flip it back and forth), so
+      // a few edges can miss the flip test by rounding. Flipping them here could run into the flip bound
+      // (anchor.off stretched 1000 times, 1500 iterations: 16 such edges, the bound reached in a line search,
+      // and the flow reported FLIP_LIMIT_REACHED with max error 0 instead of its start's)
       e2 = 0;
-      evaluate(e2);
+      evaluate(e2, false);
     }
-    eng_.stop_recording_flips();
-    err = std::isfinite(e2) ? e2 : err_old;
+    err = std::isfinite(e2) ? e2 : err_old; // (the recording goes on: the step may end in return_to_start())
   }
 
   bool report(double err, double t)
