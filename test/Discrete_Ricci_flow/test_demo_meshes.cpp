@@ -406,6 +406,40 @@ CGAL_HC_TEST_CASE(stretched_joint_reaches_its_rounding_floor)
             << st.max_curvature_error << std::endl;
 }
 
+namespace {
+// `file` stretched 1000 times along x and shrunk 1000 times along z, then `flow`: the state a flow that did
+// not converge returns must have finite positive lengths; its angle sums (Discrete_metric::curvature(), from
+// the returned lengths) give the reported error; and after a failed line search it is the last accepted
+// iterate, whose error is the last of `error_history`
+template <class Flow>
+void check_stretched_flow_returns_its_state(const std::string& file, Flow flow)
+{
+  const Mesh m = stretched_1000(ricci_test::demo_mesh(file));
+  CGAL_HC_CHECK(!m.is_empty());
+  if(m.is_empty()) return;
+  try {
+    const RF::Discrete_metric<Point_3> r = flow(m);
+    const auto& st = r.statistics();
+    std::cout << "  " << file << " stretched: " << RF::to_string(st.status) << " after " << st.iterations
+              << " iterations, max |K| " << st.max_curvature_error << ", " << st.number_of_flips << " flips" << std::endl;
+    CGAL_HC_CHECK_MSG(std::isfinite(st.max_curvature_error), st.max_curvature_error);
+    double lmin = HUGE_VAL, lmax = 0;
+    for(auto e : r.intrinsic_mesh().edges()) { lmin = (std::min)(lmin, r.length(e)); lmax = (std::max)(lmax, r.length(e)); }
+    CGAL_HC_CHECK_MSG(lmin > 0 && std::isfinite(lmax), "lengths in [" << lmin << ", " << lmax << "]");
+    const double k = max_abs_curvature(r);
+    CGAL_HC_CHECK_MSG(std::abs(k - st.max_curvature_error) <= 1e-9 * (1 + k), "max |K| " << k << ", reported " << st.max_curvature_error);
+    if(st.status == RF::Flow_status::LINE_SEARCH_FAILED) {
+      CGAL_HC_CHECK(!st.error_history.empty());
+      if(!st.error_history.empty())
+        CGAL_HC_CHECK_MSG(st.max_curvature_error == st.error_history.back(),
+                          "reported " << st.max_curvature_error << ", last accepted iterate " << st.error_history.back());
+    }
+  } catch(const CGAL::Numerical_error& e) {
+    CGAL_HC_CHECK_MSG(false, e.what());
+  }
+}
+} // namespace
+
 // A failed line search returns to its start, triangulation included: the rejected trials' Ptolemy flips are
 // undone (`Flow_engine::undo_flips()`), not flipped back at the start's u. elk.off (genus 1) stretched 1000
 // times along x and shrunk 1000 times along z, flat metric: far from any solution (u from -1118 to 162 at a
@@ -414,41 +448,10 @@ CGAL_HC_TEST_CASE(stretched_joint_reaches_its_rounding_floor)
 // lengths", which was not the cause. It now ends with a failure status and its last accepted iterate: finite,
 // positive lengths whose angle sums are the reported error (LINE_SEARCH_FAILED at max |K| 5.6: the flow is far
 // from a metric double arithmetic can represent, and says so by its status).
-namespace {
-// the state a flow that did not converge returns: finite positive lengths; its angle sums
-// (Discrete_metric::curvature(), from the returned lengths) give the reported error; and a failed line search
-// returned to its start, the last accepted iterate, whose error is the last of `error_history`
-void check_returned_state(const std::string& name, const RF::Discrete_metric<Point_3>& r)
-{
-  const auto& st = r.statistics();
-  std::cout << "  " << name << ": " << RF::to_string(st.status) << " after " << st.iterations << " iterations, max |K| "
-            << st.max_curvature_error << ", " << st.number_of_flips << " flips" << std::endl;
-  CGAL_HC_CHECK_MSG(std::isfinite(st.max_curvature_error), st.max_curvature_error);
-  double lmin = HUGE_VAL, lmax = 0;
-  for(auto e : r.intrinsic_mesh().edges()) { lmin = (std::min)(lmin, r.length(e)); lmax = (std::max)(lmax, r.length(e)); }
-  CGAL_HC_CHECK_MSG(lmin > 0 && std::isfinite(lmax), "lengths in [" << lmin << ", " << lmax << "]");
-  const double k = max_abs_curvature(r);
-  CGAL_HC_CHECK_MSG(std::abs(k - st.max_curvature_error) <= 1e-9 * (1 + k), "max |K| " << k << ", reported " << st.max_curvature_error);
-  if(st.status == RF::Flow_status::LINE_SEARCH_FAILED) {
-    CGAL_HC_CHECK(!st.error_history.empty());
-    if(!st.error_history.empty())
-      CGAL_HC_CHECK_MSG(st.max_curvature_error == st.error_history.back(),
-                        "reported " << st.max_curvature_error << ", last accepted iterate " << st.error_history.back());
-  }
-}
-} // namespace
-
 CGAL_HC_TEST_CASE(failed_line_search_restores_its_start)
 {
-  const Mesh m = stretched_1000(ricci_test::demo_mesh("elk.off"));
-  CGAL_HC_CHECK(!m.is_empty());
-  if(m.is_empty()) return;
-  try {
-    // (before the usable-length bound the returned metric's angle sums gave 23.935 against a reported 23.946)
-    check_returned_state("elk.off stretched", RF::flat_metric(m, CGAL::parameters::number_of_iterations(400)));
-  } catch(const CGAL::Numerical_error& e) {
-    CGAL_HC_CHECK_MSG(false, e.what());
-  }
+  // (before the usable-length bound the returned metric's angle sums gave 23.935 against a reported 23.946)
+  check_stretched_flow_returns_its_state("elk.off", [](const Mesh& m) { return RF::flat_metric(m, CGAL::parameters::number_of_iterations(400)); });
 }
 
 // The flips back at the start of a failed line search can end in another state: anchor.off (genus 4) stretched
@@ -456,14 +459,7 @@ CGAL_HC_TEST_CASE(failed_line_search_restores_its_start)
 // A step that fails now returns to its start exactly (`Newton_solver::return_to_start()`)
 CGAL_HC_TEST_CASE(failed_line_search_returns_the_last_iterate)
 {
-  const Mesh m = stretched_1000(ricci_test::demo_mesh("anchor.off"));
-  CGAL_HC_CHECK(!m.is_empty());
-  if(m.is_empty()) return;
-  try {
-    check_returned_state("anchor.off stretched", RF::hyperbolic_uniformization(m));
-  } catch(const CGAL::Numerical_error& e) {
-    CGAL_HC_CHECK_MSG(false, e.what());
-  }
+  check_stretched_flow_returns_its_state("anchor.off", [](const Mesh& m) { return RF::hyperbolic_uniformization(m); });
 }
 
 // The trapezoid can say that the energy fell where it rose: past the minimum on the line, across flips, the
