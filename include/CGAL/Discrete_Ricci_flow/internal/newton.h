@@ -524,13 +524,14 @@ private:
   // undoing every flip since (`Flow_engine::undo_flips()`), evaluated without flips; returns false. The
   // restores between the step's line searches take the flips back instead (`restore()`), and in the disk
   // flows of `spherical_uniformization()` (degenerate boundary triangles) those regularly end in another
-  // state, with an error 1.03 to 21 times the start's (stretched genus-0 demo meshes); the retries start from
-  // there, and returning them to the exact start instead made dragknob.off stretched 30 times fail. So only the
-  // end of a failed step is exact: before, the flow returned the last restored state (anchor.off stretched 1000
-  // times, H^2: its last line search started at max |K| 24.8, and the flow returned a state at 84.4; test
-  // `failed_line_search_returns_the_last_iterate`). The disk flow's rounds keep the last restored state
-  // (`Newton_options::return_to_start_on_failure`): a round's end is the warm start of the next, not a result,
-  // and with the exact start dragknob.off stretched 30 times failed there too (scratch sweep, 2026-12-07)
+  // state (43 restores of 5 genus-0 demo meshes stretched 30 times: errors 1.03 to 39 times the start's); the
+  // retries start from there, and returning them to the exact start instead made dragknob.off stretched 30
+  // times fail. So only the end of a failed step is exact: before, the flow returned the last restored state
+  // (anchor.off stretched 1000 times, H^2: its last line search started at max |K| 24.8, and the flow returned
+  // a state at 84.4; test `failed_line_search_returns_the_last_iterate`). The disk flow's rounds keep the last
+  // restored state (`Newton_options::return_to_start_on_failure`): a round's end is the warm start of the
+  // next, not a result, and with the exact start dragknob.off stretched 30 times failed there too (scratch
+  // sweep, 2026-12-07)
   bool return_to_start(double& err)
   {
     if(!o_.return_to_start_on_failure) { eng_.stop_recording_flips(); return false; }
