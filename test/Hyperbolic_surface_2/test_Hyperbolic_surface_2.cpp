@@ -87,10 +87,11 @@ CGAL_HC_TEST_CASE(tiny_triangles_have_the_euclidean_limit)
 // Kahan's half perimeter differences on nearly flat (cap) triangles and needles, against their exact values
 // (MPFR at 320 bits: the sums and differences of these doubles are exact there): each within 2 ulps. Computed
 // as s - a from a rounded s, s - a of a cap carries an absolute error of about eps s, and the half-angle
-// formula's angles lost up to 1.7e-6 (printed: `corner_angle()`, which does not use the helper yet)
-CGAL_HC_TEST_CASE(half_perimeter_differences_are_accurate_on_flat_triangles)
+// formula's angles lost up to 1.7e-6 (printed: `corner_angle()`, which does not use the helper yet). The area
+// (l'Huilier, with the helper) against pi minus the exact angle sum: relative 5.6e-16 (1 before the helper)
+CGAL_HC_TEST_CASE(flat_triangle_differences_and_areas_are_accurate)
 {
-  double max_rel = 0, corner_angle_err = 0;
+  double max_rel = 0, corner_angle_err = 0, area_rel = 0;
   mpfr_t x[4], t;
   for(auto& v : x) mpfr_init2(v, 320);
   mpfr_init2(t, 320);
@@ -109,12 +110,15 @@ CGAL_HC_TEST_CASE(half_perimeter_differences_are_accurate_on_flat_triangles)
     cgal_hc_test::exact_corner_angles(1, l, theta, area);
     for(int i = 0; i < 3; ++i)
       corner_angle_err = (std::max)(corner_angle_err, std::abs(HS::corner_angle(l[i], l[(i + 1) % 3], l[(i + 2) % 3]) - theta[i]));
+    if(area > 0) area_rel = (std::max)(area_rel, std::abs(HS::triangle_area(l[0], l[1], l[2]) / area - 1));
   }
   for(auto& v : x) mpfr_clear(v);
   mpfr_clear(t);
   std::cout << "  40000 caps and needles: largest relative error of s, s - a, s - b, s - c: " << max_rel
-            << " (corner_angle(), without them: " << corner_angle_err << " from the exact angle)" << std::endl;
+            << " (corner_angle(), without them: " << corner_angle_err << " from the exact angle); triangle_area(): "
+            << area_rel << " relative" << std::endl;
   CGAL_HC_CHECK_MSG(max_rel <= 4.5e-16, max_rel);
+  CGAL_HC_CHECK_MSG(area_rel <= 1e-13, area_rel);
 }
 
 CGAL_HC_TEST_CASE(flipped_diagonal_matches_a_layout)
