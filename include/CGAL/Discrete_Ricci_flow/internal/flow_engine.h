@@ -82,7 +82,7 @@ public:
   std::vector<char> in_queue;
   // while `record_undo`: the flips made since, each with the edge's Penner coordinate and the halfedge anchors
   // of its two faces and two ends before it, so that `undo_flips()` can return to the triangulation of that
-  // moment (a line search's start) exactly, face anchors included (they fix the corner order of the face
+  // moment (a Newton step's start) exactly, face anchors included (they fix the corner order of the face
   // functions, hence their rounding)
   struct Undo_record { E e; double lambda; F f[2]; H fh[2]; V v[2]; H vh[2]; };
   bool record_undo = false;
@@ -335,7 +335,7 @@ public:
     }
     undo_log.clear();
   }
-  // ends the recording and frees the log (at 2.6M faces a line search's trials flip about 10^5 to 10^6 edges:
+  // ends the recording and frees the log (at 2.6M faces a step's trials flip about 10^5 to 10^6 edges:
   // up to 48 MB that the next factorization, the flow's peak, would otherwise hold)
   void stop_recording_flips()
   {

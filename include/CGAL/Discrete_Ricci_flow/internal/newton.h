@@ -596,8 +596,8 @@ private:
 
   // back to the line search's start u_old: the Delaunay flips at u_old take the rejected trials' flips back
   // (Ptolemy: the same Penner coordinates up to rounding; on meshes stretched 1000 times not quite the same
-  // state: femur.off's error went 706 -> 757). Where that fails, every flip since the line search's start is
-  // undone exactly (`Flow_engine::undo_flips()`):
+  // state: femur.off's error went 706 -> 757). Where that fails, every flip since the step's start (the same
+  // u_old for all its line searches) is undone exactly (`Flow_engine::undo_flips()`):
   // - the trials' Penner coordinates under- or overflowed, and the lengths at u_old are lost (elk.off stretched
   //   1000 times along x and shrunk along z, flat metric: u in [-1118, 162] at a trial point, lambda0 from 0
   //   to 6e307; after 165 iterations the flow threw "the initial state ... has zero, non-finite or
