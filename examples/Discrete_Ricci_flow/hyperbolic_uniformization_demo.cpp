@@ -1,8 +1,8 @@
 // Hyperbolic uniformization of a closed surface of genus >= 2 and the embedding of its universal cover in the
 // Poincare disk. Usage: hyperbolic_uniformization_demo [mesh file] [tiling depth]
 // (default: CGAL's eight.off). Writes ricci_fundamental_domain.svg and ricci_tiling.svg into the current
-// directory and prints the iterations, curvature error, area vs 4 pi (g - 1) and the traces of the deck
-// transformations.
+// directory and prints the iterations, curvature error, area vs 4 pi (g - 1), the traces of the deck
+// transformations and the relator defects at vertex 0 and of the best-conditioned embedding.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -53,6 +53,12 @@ int main(int argc, char** argv)
     std::cout << "relator:";
     for(const auto& l : embedding.relator()) std::cout << " g" << l.first << (l.second > 0 ? "" : "^-1");
     std::cout << "\nrelator product distance to +-I: " << embedding.relator_defect() << std::endl;
+    // the most accurate double matrices: the base vertex and the homotopy basis (greedy or compact) whose relator
+    // has the smallest condition (high genus: turbine.off 3.5e-7 at vertex 0, 2.8e-10 with these 8 candidates)
+    const auto best = RF::Hyperbolic_embedding<K::Point_3>::best_conditioned(metric, 8);
+    std::cout << "best conditioned of 8 base vertices x 2 bases: vertex " << std::size_t(best.base_vertex())
+              << (best.basis().construction() == CGAL::Hyperbolic_surface_2::Basis_construction::COMPACT ? ", compact" : ", greedy")
+              << " basis, relator defect " << best.relator_defect() << std::endl;
     std::cout << "fundamental domain: " << embedding.domain_boundary().size() << " boundary edges, "
               << embedding.side_pairings().size() << " sides" << std::endl;
     embedding.write_fundamental_domain_svg("ricci_fundamental_domain.svg");

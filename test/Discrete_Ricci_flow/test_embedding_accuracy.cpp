@@ -256,21 +256,79 @@ CGAL_HC_TEST_CASE(embedding_accuracy_on_every_hyperbolic_demo_mesh)
               << e.exact_precision() << " bits, max |K| " << e.exact_polished_max_curvature() << ", log10 condition "
               << e.exact_relator_condition_log10() << ", " << exact_seconds << " s";
     if(!(defect <= 1e-8)) {
-      const auto v = Embedding::best_conditioned_base_vertex(r, 8);
-      const Embedding eb(r, v);
-      defect = check_embedding(name, r, eb);
-      std::cout << "; best of 8 bases: vertex " << std::size_t(v) << " defect " << defect << ", condition " << eb.relator_condition();
+      try {
+        const Embedding eb = Embedding::best_conditioned(r, 16);
+        defect = check_embedding(name, r, eb);
+        std::cout << "; best conditioned of 16 bases x 2 constructions: vertex " << std::size_t(eb.base_vertex())
+                  << (eb.basis().construction() == CGAL::Hyperbolic_surface_2::Basis_construction::COMPACT ? " compact" : " greedy")
+                  << ", defect " << defect << " (long double " << eb.relator_defect_long_double() << "), condition "
+                  << eb.relator_condition();
+      } catch(const CGAL::Numerical_error& ex) { // cheese.off: not representable in double
+        std::cout << "; best conditioned: " << ex.what();
+      }
     }
     std::cout << std::endl;
-    if(defect <= 1e-8) ++met; else missed += " " + name;
+    if(defect <= 1e-8) ++met;
+    else {
+      missed += " " + name;
+      // cheese.off (genus 133): the relator's partial products are not representable in double: exact
+      // condition 1e19.9 to 1e26.5 with either construction at 4 base vertices (manual)
+      CGAL_HC_CHECK_MSG(name.find("cheese") != std::string::npos, name << ": relator defect in double " << defect);
+      // its compact basis has loops up to 134 units long, whose long-double holonomies are not finite: the exact
+      // path starts in MPFR (it threw "a non-finite long-double value" before)
+      const Embedding ec(r, Mesh::Vertex_index(0), CGAL::Hyperbolic_surface_2::Basis_construction::COMPACT);
+      const std::vector<Embedding::Exact_isometry> d = ec.deck_transformations_exact();
+      bool hyperbolic = d.size() == ec.number_of_generators();
+      for(const auto& g : d) hyperbolic = hyperbolic && g.alpha_real() * g.alpha_real() * CGAL::Gmpzf(4) > g.determinant();
+      const double own = mpfr_relator_defect(ec, 4 * long(ec.exact_precision()));
+      std::cout << "  " << name << ", compact basis at vertex 0: exact defect " << own << " at " << ec.exact_precision()
+                << " bits, log10 condition " << ec.exact_relator_condition_log10() << std::endl;
+      CGAL_HC_CHECK_MSG(hyperbolic, name << ": compact basis, an exact generator is not hyperbolic");
+      CGAL_HC_CHECK_MSG(own <= 1e-8 && std::abs(own - ec.relator_defect_exact()) <= 1e-14 + 1e-6 * own,
+                        name << ": compact basis, exact relator defect " << own << ", relator_defect_exact() " << ec.relator_defect_exact());
+    }
   }
   std::cout << "  relator defect <= 1e-8 on " << met << " of " << meshes.size() << " meshes; not:" << missed
             << "; exact deck transformations: on " << met_exact << std::endl;
   CGAL_HC_CHECK(met_exact == meshes.size());
-  // the double matrices miss 1e-8 on turbine.off (2.4e-7 at the best of 8 bases), cheese.off (not representable)
-  // and the stitched boeing.off (genus 10: 1.7e-8 at base 0, condition 8.8e5): the floor of double products with
-  // the greedy basis (manual)
-  CGAL_HC_CHECK_MSG(met + 3 >= meshes.size(), met << " of " << meshes.size());
+  CGAL_HC_CHECK_MSG(met + 1 >= meshes.size(), met << " of " << meshes.size());
+}
+
+// best_conditioned() is the first embedding of smallest relator_condition() among the candidates (vertex
+// (i n) / k, greedy then compact), and it equals the embedding the public constructor builds there (it shares
+// the metric's polish among its candidates and lays out the fundamental domain of the chosen one only)
+CGAL_HC_TEST_CASE(best_conditioned_embedding_is_the_best_candidate)
+{
+  typedef CGAL::Hyperbolic_surface_2::Basis_construction C;
+  for(const char* file : {"eight.off", "double-torus-example.off", "couplingdown.off"}) {
+    const Mesh m = ricci_test::demo_mesh(file);
+    if(m.is_empty()) continue;
+    const auto r = RF::hyperbolic_uniformization(m);
+    CGAL_HC_CHECK_MSG(r.converged(), file);
+    const std::size_t n = r.intrinsic_mesh().number_of_vertices(), k = 6;
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t best_v = 0;
+    C best_c = C::GREEDY;
+    for(std::size_t i = 0; i < k; ++i)
+      for(const C c : {C::GREEDY, C::COMPACT}) {
+        const double cond = Embedding(r, Mesh::Vertex_index(Mesh::size_type((i * n) / k)), c).relator_condition();
+        if(cond < best) { best = cond; best_v = (i * n) / k; best_c = c; }
+      }
+    const Embedding b = Embedding::best_conditioned(r, k);
+    CGAL_HC_CHECK_MSG(std::size_t(b.base_vertex()) == best_v && b.basis().construction() == best_c && b.relator_condition() == best,
+                      file << ": best_conditioned() chose vertex " << std::size_t(b.base_vertex()) << " (condition "
+                           << b.relator_condition() << "), the candidates' best is vertex " << best_v << " (" << best << ")");
+    const Embedding e(r, b.base_vertex(), b.basis().construction());
+    const std::vector<Isometry> db = b.deck_transformations(), de = e.deck_transformations();
+    bool same = db.size() == de.size() && b.domain_boundary() == e.domain_boundary() && b.base_point() == e.base_point();
+    for(std::size_t i = 0; same && i < db.size(); ++i)
+      same = db[i].alpha_real() == de[i].alpha_real() && db[i].alpha_imag() == de[i].alpha_imag() &&
+             db[i].beta_real() == de[i].beta_real() && db[i].beta_imag() == de[i].beta_imag();
+    CGAL_HC_CHECK_MSG(same, file << ": best_conditioned() differs from the embedding built at its vertex");
+    CGAL_HC_CHECK(std::size_t(Embedding::best_conditioned_base_vertex(r, k, best_c)) == best_v);
+    std::cout << "  " << file << ": best of " << k << " x 2: vertex " << best_v << (best_c == C::COMPACT ? " compact" : " greedy")
+              << ", condition " << best << ", defect " << b.relator_defect() << std::endl;
+  }
 }
 
 // the multiprecision number type of the exact path encloses its value in to_interval() (the filters of CGAL

@@ -282,9 +282,12 @@ CGAL_HC_TEST_CASE(any_face_graph_polyhedron)
   HS::Hyperbolic_surface_triangulation<Poly, PMap> s(P, PMap(lm));
   CGAL_HC_CHECK(s.genus() == 2);
   CGAL_HC_CHECK(std::abs(s.area() - 4 * CGAL_PI) < 1e-9);
-  HS::Homotopy_basis<Poly> basis(P, *vertices(P).first, PMap(lm));
-  CGAL_HC_CHECK(basis.number_of_generators() == 4);
-  CGAL_HC_CHECK(basis.relator().size() == 8);
+  for(const auto c : {HS::Basis_construction::GREEDY, HS::Basis_construction::COMPACT}) {
+    HS::Homotopy_basis<Poly> basis(P, *vertices(P).first, PMap(lm), c);
+    CGAL_HC_CHECK(basis.construction() == c);
+    CGAL_HC_CHECK(basis.number_of_generators() == 4);
+    CGAL_HC_CHECK(basis.relator().size() == 8);
+  }
 }
 
 CGAL_HC_TEST_CASE(bad_input_is_rejected)
@@ -345,10 +348,17 @@ CGAL_HC_TEST_CASE(homotopy_basis_rejects_a_bad_base_vertex)
   const Mesh::Vertex_index extra = m2.add_vertex();
   m2.remove_vertex(extra);
   CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m2, extra, lm2), CGAL::Invalid_input_error);
-  // a zero weight
+  // a zero weight, for both constructions (the compact one reads every weight before its trees)
   const auto e0 = *edges(m).first;
   lm[e0] = 0;
   CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, rps.base, lm), CGAL::Invalid_input_error);
+  CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, rps.base, lm, HS::Basis_construction::COMPACT), CGAL::Invalid_input_error);
+  // two components
+  Mesh m3 = rps.mesh, m4 = rps.mesh;
+  m3.join(m4);
+  auto lm3 = m3.property_map<Mesh::Edge_index, double>("e:hyperbolic_length").first;
+  for(const auto c : {HS::Basis_construction::GREEDY, HS::Basis_construction::COMPACT})
+    CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m3, rps.base, lm3, c), CGAL::Invalid_mesh_error);
 }
 
 CGAL_HC_TEST_CASE(homotopy_basis_on_regular_polygon_surfaces)
@@ -358,8 +368,8 @@ CGAL_HC_TEST_CASE(homotopy_basis_on_regular_polygon_surfaces)
     std::mt19937 rng(g);
     std::vector<Mesh::Vertex_index> bases{rps.base};
     for(int k = 0; k < 5; ++k) bases.push_back(Mesh::Vertex_index(unsigned(rng() % rps.mesh.number_of_vertices())));
-    for(auto base : bases) {
-      HS::Homotopy_basis<Mesh> B(rps.mesh, base, rps.length);
+    for(auto base : bases) for(const auto construction : {HS::Basis_construction::GREEDY, HS::Basis_construction::COMPACT}) {
+      HS::Homotopy_basis<Mesh> B(rps.mesh, base, rps.length, construction);
       CGAL_HC_CHECK(B.genus() == g);
       CGAL_HC_CHECK(B.number_of_generators() == std::size_t(2 * g));
       // every loop is a closed path from the base, using its generator edge once
@@ -385,6 +395,13 @@ CGAL_HC_TEST_CASE(homotopy_basis_on_regular_polygon_surfaces)
       for(const auto& c : count) ok = ok && c.second == 1;
       CGAL_HC_CHECK(ok);
       CGAL_HC_CHECK(rps.mesh.source(B.cut_boundary().front()) == base);
+      // the cut graph is the shortest-path tree and the generator edges; the other edges join the faces into
+      // one disk (a spanning tree of the dual graph: F - 1 edges)
+      std::size_t cut = 0, tree = 0;
+      for(auto e : rps.mesh.edges()) { cut += B.is_cut_edge(e); tree += B.is_tree_edge(e); }
+      CGAL_HC_CHECK(tree == rps.mesh.number_of_vertices() - 1 && cut == tree + std::size_t(2 * g));
+      CGAL_HC_CHECK(rps.mesh.number_of_edges() - cut == rps.mesh.number_of_faces() - 1);
+      CGAL_HC_CHECK(B.canonical_change().new_in_old.size() == std::size_t(2 * g));
     }
   }
 }

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <complex>
+#include <initializer_list>
 #include <memory>
 #include <limits>
 #include <string>
@@ -40,9 +41,12 @@ namespace Discrete_Ricci_flow {
   with the shared surface layer `CGAL::Hyperbolic_surface_2`.
 
   Construction (cost O(n log n)):
-  - the homotopy basis is the layer's `CGAL::Hyperbolic_surface_2::Homotopy_basis` at the base vertex (greedy
-    tree-cotree, loops x_1 .. x_2g sorted by length; `basis()`, `homotopy_basis()`): deck transformation i is
-    the holonomy of loop i of that class, the same loop as generator i of `Surface_shortest_words`;
+  - the homotopy basis is the layer's `CGAL::Hyperbolic_surface_2::Homotopy_basis` at the base vertex (tree-cotree,
+    loops x_1 .. x_2g sorted by length; `basis()`, `homotopy_basis()`), greedy by default: deck transformation
+    i is the holonomy of loop i of that class, the same loop as generator i of `Surface_shortest_words`. The
+    compact construction (`Basis_construction::COMPACT`) keeps the relator's partial products short, and with
+    them the rounding error of the relator product (`best_conditioned()` chooses the base vertex and the
+    construction);
   - the metric in long double: the lengths of `metric` have angle sums 2 pi only up to their rounding (max |K|
     about 1e-14, `input_max_curvature()`), and the relator amplifies that residual by its condition. A few
     Newton steps of vertex scaling with the angle sums in long double (systems solved in double) give lengths
@@ -59,8 +63,10 @@ namespace Discrete_Ricci_flow {
     products in double. The base vertex's lift is at `base_point()` (the origin only if that is optimal);
     they are rounded to double once, at the end. Their products in double have a floor of about
     1e-16 max_k cosh(translation length of the relator's partial product P_k) in every frame, which the
-    rotation of the relator (below) makes as small as the basis allows (the manual's "Accuracy of the
-    relator": double defect 5e-7 on turbine.off, cheese.off not representable in double);
+    rotation of the relator (below) makes as small as the basis allows, and `best_conditioned()` as small as
+    16 base vertices and the two constructions of the basis allow (the manual's "Accuracy of the relator":
+    double defect 3.5e-7 on turbine.off at vertex 0 with the greedy basis, 6.7e-10 for `best_conditioned()`;
+    cheese.off not representable in double);
   - exact deck transformations (`deck_transformations_exact()`, on demand): the long-double ones converted
     exactly when their exact relator product is within 1e-10 of the identity, otherwise the same development
     in MPFR at a precision chosen from the measured condition, on the metric polished to that precision;
@@ -96,6 +102,7 @@ public:
   typedef CGAL::Poincare_disk_isometry_2<Kernel> Isometry;
   typedef std::complex<double> Complex;
   typedef CGAL::Hyperbolic_surface_2::Homotopy_basis<Mesh> Basis;
+  typedef CGAL::Hyperbolic_surface_2::Basis_construction Basis_construction;
   typedef CGAL::Hyperbolic_surface_2::Word Word;
   /// isometries in long double (the side pairings of a large domain have entries beyond double's range of
   /// accurate determinants)
@@ -116,12 +123,14 @@ public:
   };
 
   /*!
-    Builds the embedding (a copy of `metric` is kept, shared by copies of the embedding). `metric` must be a
-    converged (or stagnated below 1e-9) metric of a closed surface with a hyperbolic background
-    (genus >= 2) or a Euclidean background (genus 1), with zero target curvature everywhere (no cones).
+    Builds the embedding (a copy of `metric` is kept, shared by copies of the embedding) with the homotopy
+    basis at `base` built by `construction`. `metric` must be a converged (or stagnated below 1e-9) metric of a
+    closed surface with a hyperbolic background (genus >= 2) or a Euclidean background (genus 1), with zero
+    target curvature everywhere (no cones).
     \throws CGAL::Invalid_metric_error, CGAL::Invalid_mesh_error, CGAL::Invalid_option_error otherwise.
   */
-  explicit Hyperbolic_embedding(const Metric& metric, Vertex_index base = Vertex_index(0))
+  explicit Hyperbolic_embedding(const Metric& metric, Vertex_index base = Vertex_index(0),
+                                Basis_construction construction = Basis_construction::GREEDY)
     : metric_ptr_(std::make_shared<const Metric>(metric)), metric_(*metric_ptr_), m_(metric_.intrinsic_mesh()),
       base_(base)
   {
@@ -136,41 +145,36 @@ public:
       polish_before_ = double(p.max_curvature_before); polish_after_ = double(p.max_curvature_after);
       polish_steps_ = p.steps;
     }
-    basis_ = std::make_shared<const Basis>(m_, base_, metric_.edge_length_map());
-    root_ = m_.halfedge(base_); // target(root_) == base
-    const std::array<internal::Cplx, 3> z = charts().chart(m_.face(root_));
-    const internal::Cplx zb = z[internal::index_in_face(m_, m_.next(root_))]; // source(next(root)) = base
-    frame_ = hyperbolic_ ? internal::Motion::translation_to_origin(zb) : internal::Motion::euclidean(1, -zb);
-    relator_word_ = basis_->relator();
-    compute_holonomies();
-    if(hyperbolic_) {
-      relator_word_ = internal::best_relator_rotation(hol_, relator_word_);
-      recentre();
-    }
-    for(const int l : relator_word_) relator_.push_back({std::size_t(std::abs(l) - 1), l > 0 ? 1 : -1});
-    domain_ = Domain(m_, root_, frame_, charts(), [this](Halfedge_index h) { return metric_.length(h); });
+    build(construction, true);
   }
 
   /*!
     The base vertex, among `number_of_candidates` vertices spread over the index range (vertex 0 first), whose
-    embedding has the smallest `relator_condition()`. The relator defect is about the rounding error times
-    that condition (the relator's partial products amplify the errors by the distance of the
-    relator polygon's corners from the origin), and the condition of the greedy relator varies by orders of
-    magnitude with the base vertex (turbine.off: 1e8 to 6e12). Cost: `number_of_candidates` embeddings.
+    embedding with the basis built by `construction` has the smallest `relator_condition()`. The relator
+    defect is about the rounding error times that condition (the relator's partial products amplify the
+    errors by the distance of the relator polygon's corners from the origin), and the condition of the greedy
+    relator varies by orders of magnitude with the base vertex (turbine.off: 1e8 to 6e12). Cost:
+    `number_of_candidates` embeddings.
     \throws the exceptions of the constructor.
   */
-  static Vertex_index best_conditioned_base_vertex(const Metric& metric, std::size_t number_of_candidates = 16)
+  static Vertex_index best_conditioned_base_vertex(const Metric& metric, std::size_t number_of_candidates = 16,
+                                                   Basis_construction construction = Basis_construction::GREEDY)
   {
-    const std::size_t n = metric.intrinsic_mesh().number_of_vertices();
-    const std::size_t k = (std::max)(std::size_t(1), (std::min)(number_of_candidates, n));
-    Vertex_index best(0);
-    double best_condition = std::numeric_limits<double>::infinity();
-    for(std::size_t i = 0; i < k; ++i) {
-      const Vertex_index v(static_cast<typename Vertex_index::size_type>((i * n) / k));
-      const double c = Hyperbolic_embedding(metric, v).relator_condition();
-      if(c < best_condition) { best_condition = c; best = v; }
-    }
-    return best;
+    return best_conditioned_(metric, number_of_candidates, {construction}).base_vertex();
+  }
+
+  /*!
+    The embedding with the smallest `relator_condition()` among those at `number_of_candidates` base vertices
+    spread over the index range (vertex 0 first), each with the greedy and the compact basis (the greedy one
+    first; the first minimum is kept): the embedding whose deck transformations are the most accurate in
+    double for their relator (the manual's "Accuracy of the relator": on turbine.off, genus 11, the user's
+    relator defect in double goes from 3.5e-7 at base vertex 0 with the greedy basis to 7e-10). Cost:
+    2 `number_of_candidates` embeddings.
+    \throws the exceptions of the constructor.
+  */
+  static Hyperbolic_embedding best_conditioned(const Metric& metric, std::size_t number_of_candidates = 16)
+  {
+    return best_conditioned_(metric, number_of_candidates, {Basis_construction::GREEDY, Basis_construction::COMPACT});
   }
 
   /// the metric (the embedding's copy) and its intrinsic mesh, whose halfedges the loops refer to
@@ -434,6 +438,60 @@ private:
   {
     hol_.clear();
     for(std::size_t i = 0; i < number_of_generators(); ++i) hol_.push_back(develop(basis_->loop(i)));
+  }
+
+  // the embedding of `polished`'s metric with the basis at `base` built by `construction`: the metric's check
+  // and its long-double polish (which do not depend on the basis) are taken from `polished`; the fundamental
+  // domain is laid out only if `with_domain` (the candidates of best_conditioned_() need the relator only)
+  Hyperbolic_embedding(const Hyperbolic_embedding& polished, Vertex_index base, Basis_construction construction,
+                       bool with_domain)
+    : metric_ptr_(polished.metric_ptr_), metric_(*metric_ptr_), m_(metric_.intrinsic_mesh()), base_(base),
+      hyperbolic_(polished.hyperbolic_), long_length_(polished.long_length_), long_half_sinh_(polished.long_half_sinh_),
+      polish_before_(polished.polish_before_), polish_after_(polished.polish_after_), polish_steps_(polished.polish_steps_)
+  {
+    build(construction, with_domain);
+  }
+
+  // the basis, the holonomies of its loops in their frame, the relator and the fundamental domain
+  void build(Basis_construction construction, bool with_domain)
+  {
+    basis_ = std::make_shared<const Basis>(m_, base_, metric_.edge_length_map(), construction);
+    root_ = m_.halfedge(base_); // target(root_) == base
+    const std::array<internal::Cplx, 3> z = charts().chart(m_.face(root_));
+    const internal::Cplx zb = z[internal::index_in_face(m_, m_.next(root_))]; // source(next(root)) = base
+    frame_ = hyperbolic_ ? internal::Motion::translation_to_origin(zb) : internal::Motion::euclidean(1, -zb);
+    relator_word_ = basis_->relator();
+    compute_holonomies();
+    if(hyperbolic_) {
+      relator_word_ = internal::best_relator_rotation(hol_, relator_word_);
+      recentre();
+    }
+    relator_.clear();
+    for(const int l : relator_word_) relator_.push_back({std::size_t(std::abs(l) - 1), l > 0 ? 1 : -1});
+    if(with_domain) domain_ = Domain(m_, root_, frame_, charts(), [this](Halfedge_index h) { return metric_.length(h); });
+  }
+
+  // the candidates share the check and the polish of the metric (the embedding at vertex 0 with the first
+  // construction); the chosen one is built again with its fundamental domain
+  static Hyperbolic_embedding best_conditioned_(const Metric& metric, std::size_t number_of_candidates,
+                                                std::initializer_list<Basis_construction> constructions)
+  {
+    const std::size_t n = metric.intrinsic_mesh().number_of_vertices();
+    const std::size_t k = (std::max)(std::size_t(1), (std::min)(number_of_candidates, n));
+    const Hyperbolic_embedding first(metric, Vertex_index(0), *constructions.begin());
+    Vertex_index best_base(0);
+    Basis_construction best_construction = *constructions.begin();
+    double best_condition = first.relator_condition();
+    for(std::size_t i = 0; i < k; ++i) {
+      const Vertex_index v(static_cast<typename Vertex_index::size_type>((i * n) / k));
+      for(const Basis_construction c : constructions) {
+        if(i == 0 && c == *constructions.begin()) continue; // `first`
+        const double condition = Hyperbolic_embedding(first, v, c, false).relator_condition();
+        if(condition < best_condition) { best_condition = condition; best_base = v; best_construction = c; }
+      }
+    }
+    if(best_base == Vertex_index(0) && best_construction == *constructions.begin()) return first;
+    return Hyperbolic_embedding(first, best_base, best_construction, true);
   }
 
   // the frame of the deck transformations (internal::frame_centre()): the generators and the relator's partial

@@ -8,6 +8,7 @@
 
 #include <CGAL/Discrete_Ricci_flow/flow_types.h>
 #include <CGAL/Discrete_Ricci_flow/internal/embedding_motions.h>
+#include <CGAL/Hyperbolic_surface_2/internal/dual_shortest_path_tree.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
@@ -15,9 +16,6 @@
 #include <complex>
 #include <cstddef>
 #include <deque>
-#include <functional>
-#include <limits>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -73,30 +71,19 @@ private:
   void build_cut(const Mesh& m, const Length& len)
   {
     const std::size_t nf = m.number_of_faces(), ne = m.number_of_edges();
-    std::vector<double> perim(nf, 0), fd(nf, std::numeric_limits<double>::infinity());
+    std::vector<Face_index> faces(nf);
+    std::vector<double> perim(nf, 0), fd;
     for(Face_index f : m.faces()) {
       const Halfedge_index h = m.halfedge(f);
+      faces[f] = f;
       perim[f] = len(h) + len(m.next(h)) + len(m.prev(h));
     }
-    std::vector<char> crossed(ne, 0), done(nf, 0);
-    std::vector<Halfedge_index> via(nf, Mesh::null_halfedge());
-    typedef std::pair<double, std::size_t> QE;
-    std::priority_queue<QE, std::vector<QE>, std::greater<QE> > pq;
-    const Face_index f0 = m.face(root_);
-    fd[f0] = 0; pq.push({0.0, std::size_t(f0)});
-    while(!pq.empty()) {
-      const QE top = pq.top(); pq.pop();
-      const Face_index f(static_cast<typename Face_index::size_type>(top.second));
-      if(done[f]) continue;
-      done[f] = 1;
-      if(via[f] != Mesh::null_halfedge()) crossed[m.edge(via[f])] = 1;
-      const Halfedge_index h0 = m.halfedge(f);
-      for(Halfedge_index h : {h0, m.next(h0), m.prev(h0)}) {
-        const Face_index g = m.face(m.opposite(h));
-        const double d = fd[f] + (perim[f] + perim[g]) / 6;
-        if(!done[g] && d < fd[g]) { fd[g] = d; via[g] = h; pq.push({d, std::size_t(g)}); }
-      }
-    }
+    std::vector<Halfedge_index> via;
+    CGAL::Hyperbolic_surface_2::internal::dual_shortest_path_tree(
+      m, faces, [](Face_index f) { return std::size_t(f); }, perim, std::size_t(m.face(root_)),
+      [](Halfedge_index) { return true; }, fd, via);
+    std::vector<char> crossed(ne, 0);
+    for(Face_index f : m.faces()) if(via[f] != Mesh::null_halfedge()) crossed[m.edge(via[f])] = 1;
     cut_.assign(ne, 0);
     std::vector<std::size_t> degree(m.number_of_vertices(), 0);
     for(Edge_index e : m.edges())

@@ -59,9 +59,18 @@ public:
     const double target = 1e-10; // 100 times below the embedding's goal of 1e-8
     Exact_data r;
     r.bits = 64; r.max_curvature = polished_max_curvature; r.polish_steps = polish_steps; r.attempts = 1;
-    for(const Motion& h : hol) r.deck.push_back(to_exact_isometry(h.h.normalized()));
-    r.defect = relator_defect(r.deck);
     r.log10_condition = std::log10(condition);
+    // a holonomy whose long-double normalization failed (|alpha|^2 beyond about 1e19, where |alpha|^2 - |beta|^2
+    // = 1 is lost: the compact basis of cheese.off, loops up to 134 units long) has no exact value: MPFR
+    // directly (before, to_exact() threw "a non-finite long-double value")
+    bool finite = true;
+    for(const Motion& h : hol) {
+      const Long_isometry n = h.h.normalized();
+      for(const Real x : {n.alpha_real(), n.alpha_imag(), n.beta_real(), n.beta_imag()}) finite = finite && std::isfinite(x);
+      if(finite) r.deck.push_back(to_exact_isometry(n));
+    }
+    if(finite) r.defect = relator_defect(r.deck);
+    else r.deck.clear();
     if(r.defect <= target) return r;
     unsigned bits = 128;
     for(int attempt = 2; attempt <= 6 && bits <= 4096; ++attempt) {
