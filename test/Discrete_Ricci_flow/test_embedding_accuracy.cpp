@@ -281,8 +281,16 @@ CGAL_HC_TEST_CASE(embedding_accuracy_on_every_hyperbolic_demo_mesh)
       bool hyperbolic = d.size() == ec.number_of_generators();
       for(const auto& g : d) hyperbolic = hyperbolic && g.alpha_real() * g.alpha_real() * CGAL::Gmpzf(4) > g.determinant();
       const double own = mpfr_relator_defect(ec, 4 * long(ec.exact_precision()));
+      // their traces: a finite value or Numerical_error, never NaN
+      std::size_t not_finite = 0;
+      bool finite = true;
+      for(std::size_t i = 0; i < ec.number_of_generators(); ++i) {
+        try { finite = finite && std::isfinite(ec.absolute_trace(i)); } catch(const CGAL::Numerical_error&) { ++not_finite; }
+      }
+      CGAL_HC_CHECK_MSG(finite, name << ": compact basis, a non-finite |trace| returned");
       std::cout << "  " << name << ", compact basis at vertex 0: exact defect " << own << " at " << ec.exact_precision()
-                << " bits, log10 condition " << ec.exact_relator_condition_log10() << std::endl;
+                << " bits, log10 condition " << ec.exact_relator_condition_log10() << "; " << not_finite
+                << " long-double deck transformations not finite (absolute_trace() throws)" << std::endl;
       CGAL_HC_CHECK_MSG(hyperbolic, name << ": compact basis, an exact generator is not hyperbolic");
       CGAL_HC_CHECK_MSG(own <= 1e-8 && std::abs(own - ec.relator_defect_exact()) <= 1e-14 + 1e-6 * own,
                         name << ": compact basis, exact relator defect " << own << ", relator_defect_exact() " << ec.relator_defect_exact());

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CGAL Hyperbolic Conformal Geometry project.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Embedding of the universal cover of a uniformized surface (thesis Section 2.3.1): greedy tree-cotree
+// Embedding of the universal cover of a uniformized surface (thesis Section 2.3.1): tree-cotree (greedy or compact)
 // homotopy basis at a base vertex, cut to a topological disk, isometric layout of the fundamental domain in
 // the Poincare disk (or the plane for a flat torus), deck transformations (holonomies of the basis loops),
 // the relator, side pairings, a tiling of the disk by the group, and the flat-torus lattice parameter tau.
@@ -43,7 +43,8 @@ namespace Discrete_Ricci_flow {
   Construction (cost O(n log n)):
   - the homotopy basis is the layer's `CGAL::Hyperbolic_surface_2::Homotopy_basis` at the base vertex (tree-cotree,
     loops x_1 .. x_2g sorted by length; `basis()`, `homotopy_basis()`), greedy by default: deck transformation
-    i is the holonomy of loop i of that class, the same loop as generator i of `Surface_shortest_words`. The
+    i is the holonomy of loop i of that class, the same loop as generator i of `Surface_shortest_words`'
+    solver with the same construction (`Surface_shortest_words::parameters::basis_construction`). The
     compact construction (`Basis_construction::COMPACT`) keeps the relator's partial products short, and with
     them the rounding error of the relator product (`best_conditioned()` chooses the base vertex and the
     construction);
@@ -223,11 +224,19 @@ public:
     return 2 * std::acosh((std::max)(1.0, absolute_trace(i) / 2));
   }
 
-  /// |trace| of the normalized deck transformation of loop i (> 2 for a hyperbolic translation)
+  /// |trace| of the normalized deck transformation of loop i (> 2 for a hyperbolic translation).
+  /// \throws CGAL::Numerical_error if the long-double holonomy of the loop is not finite (a loop so long that
+  /// the normalization of its matrix fails, e.g. 134 units on cheese.off's compact basis;
+  /// `deck_transformations_exact()` has it)
   double absolute_trace(std::size_t i) const
   {
     if(!hyperbolic_) return 2.0;
-    return double(std::sqrt(hol_[i].h.squared_normalized_trace()));
+    const double t = double(std::sqrt(hol_[i].h.squared_normalized_trace()));
+    if(!std::isfinite(t))
+      throw CGAL::Numerical_error("Hyperbolic_embedding: the long-double deck transformation of loop " + std::to_string(i) +
+                                  " is not finite (the loop is " + std::to_string(basis_->loop_length(i)) +
+                                  " long); deck_transformations_exact() has it");
+    return t;
   }
 
   /// the relator: the boundary of the cut disk read as letters (loop index, +1 or -1): `basis().relator()`, and

@@ -128,8 +128,11 @@ struct Shortest_word_options
   bool use_geometry = true;
   /// shorten the generators at construction (their lengths and paths are then available)
   bool shorten_generators = true;
-  /// for the computed (greedy) basis: turn it into a canonical system by cut and paste on its relator
+  /// for the computed basis: turn it into a canonical system by cut and paste on its relator
   bool make_canonical = true;
+  /// for the computed basis: how the layer's `Homotopy_basis` builds it (greedy by default; with the same
+  /// construction, base vertex and lengths, generator i is loop i of `Discrete_Ricci_flow::Hyperbolic_embedding`)
+  CGAL::Hyperbolic_surface_2::Basis_construction basis_construction = CGAL::Hyperbolic_surface_2::Basis_construction::GREEDY;
   /// parameters of the shortest path computations
   Shortest_path_options path_options;
 };
@@ -141,14 +144,18 @@ CGAL_HYPERBOLIC_NAMED_PARAMETER(use_geometry, ssw_use_geometry_t)
 /// named parameter of `Shortest_word_solver` (default true): shorten the generators at construction
 CGAL_HYPERBOLIC_NAMED_PARAMETER(shorten_generators, ssw_shorten_generators_t)
 /// named parameter of the computed-basis constructor of `Shortest_word_solver` (default true): make the
-/// greedy basis canonical by cut and paste (false: words in x1, ..., x2g)
+/// computed basis canonical by cut and paste (false: words in x1, ..., x2g)
 CGAL_HYPERBOLIC_NAMED_PARAMETER(make_canonical, ssw_make_canonical_t)
+/// named parameter of the computed-basis constructor of `Shortest_word_solver` (default
+/// `CGAL::Hyperbolic_surface_2::Basis_construction::GREEDY`): how the homotopy basis is built
+CGAL_HYPERBOLIC_NAMED_PARAMETER(basis_construction, ssw_basis_construction_t)
 } // namespace parameters
 
 /// \ingroup PkgSurfaceShortestWordsRef
 /// The solver options given by named parameters: `use_geometry`, `shorten_generators`, `make_canonical`
-/// (booleans, default true), and the path options of `path_options()` (`max_lift_distance`, `vertex_snap`,
-/// CGAL's `callback`), checked. \throws CGAL::Invalid_option_error for a path option out of its range
+/// (booleans, default true), `basis_construction` (default greedy), and the path options of `path_options()`
+/// (`max_lift_distance`, `vertex_snap`, CGAL's `callback`), checked. \throws CGAL::Invalid_option_error for a
+/// path option out of its range
 template <class NP>
 Shortest_word_options word_options(const NP& np)
 {
@@ -158,6 +165,7 @@ Shortest_word_options word_options(const NP& np)
   o.use_geometry = choose_parameter(get_parameter(np, internal_np::ssw_use_geometry_t_v), o.use_geometry);
   o.shorten_generators = choose_parameter(get_parameter(np, internal_np::ssw_shorten_generators_t_v), o.shorten_generators);
   o.make_canonical = choose_parameter(get_parameter(np, internal_np::ssw_make_canonical_t_v), o.make_canonical);
+  o.basis_construction = choose_parameter(get_parameter(np, internal_np::ssw_basis_construction_t_v), o.basis_construction);
   o.path_options = path_options(np);
   return o;
 }
@@ -260,8 +268,10 @@ public:
     : Shortest_word_solver(surface, base, generators, word_options(np))
   {
     static_assert(CGAL::parameters::is_default_parameter<CGAL::Named_function_parameters<T, Tag, B>,
-                                                         internal_np::ssw_make_canonical_t>::value,
-                  "make_canonical applies to the computed system only (a given system is canonical)");
+                                                         internal_np::ssw_make_canonical_t>::value &&
+                  CGAL::parameters::is_default_parameter<CGAL::Named_function_parameters<T, Tag, B>,
+                                                         internal_np::ssw_basis_construction_t>::value,
+                  "make_canonical and basis_construction apply to the computed system only");
   }
 
   /// the computed system with named parameters (`word_options()`): `make_canonical` in addition
@@ -271,9 +281,11 @@ public:
   {}
 
   /*!
-    Computes a system of loops itself: the greedy homotopy basis of Erickson and Whittlesey (the tree of
-    shortest paths from `base` for the hyperbolic edge lengths, a maximum spanning tree of the dual graph
-    for the lengths of the loops of the remaining edges, and the 2g loops of the edges in neither tree).
+    Computes a system of loops itself: the layer's `CGAL::Hyperbolic_surface_2::Homotopy_basis` for the
+    hyperbolic edge lengths, by default the greedy basis of Erickson and Whittlesey (the tree of shortest
+    paths from `base`, a maximum spanning tree of the dual graph for the lengths of the loops of the remaining
+    edges, and the 2g loops of the edges in neither tree); `options.basis_construction` (named parameter
+    `basis_construction`) chooses the compact one instead.
     The loops x1, ..., x_{2g} (tree path, edge, tree path back) generate pi_1(S, p); their relator (read
     around the cut disk) is in general not the canonical one. With `options.make_canonical` (default) the
     classical cut and paste (Nielsen substitutions on the relator) gives a canonical system a1, b1, ...,
@@ -292,7 +304,7 @@ public:
     g_ = s_.genus();
     canonical_ = false;
     std::unordered_map<halfedge_descriptor, int> labels;
-    halfedge_descriptor first = greedy_basis(labels);
+    halfedge_descriptor first = computed_basis(labels);
     build_cut_system(labels, first);
     if(opt_.make_canonical) {
       try {
@@ -307,7 +319,7 @@ public:
         }
         canonical_ = true;
       } catch(const std::invalid_argument& e) {
-        throw Invalid_generators_error(std::string("Shortest_word_solver: cannot make the greedy basis canonical: ") + e.what());
+        throw Invalid_generators_error(std::string("Shortest_word_solver: cannot make the computed basis canonical: ") + e.what());
       }
     }
     make_reducer();
@@ -315,7 +327,7 @@ public:
     shorten();
   }
 
-  /// true for a user-given canonical system a1, b1, ..., false for the computed greedy basis x1, x2, ...
+  /// true for a user-given canonical system a1, b1, ..., false for the computed basis x1, x2, ...
   bool is_canonical() const { return canonical_; }
 
   /// the word as text: "a1 b1 a1^-1 ..." for a canonical system, "x1 x3^-1 ..." otherwise
@@ -787,16 +799,16 @@ private:
     x_to_gen_.clear();
   }
 
-  // the greedy homotopy basis of the shared layer (Hyperbolic_surface_2::Homotopy_basis): generator i is its
-  // loop i; fills the labels of the cut graph (tree edges 0, generator edge i +-(i+1))
-  halfedge_descriptor greedy_basis(std::unordered_map<halfedge_descriptor, int>& labels)
+  // the homotopy basis of the shared layer (Hyperbolic_surface_2::Homotopy_basis, opt_.basis_construction):
+  // generator i is its loop i; fills the labels of the cut graph (tree edges 0, generator edge i +-(i+1))
+  halfedge_descriptor computed_basis(std::unordered_map<halfedge_descriptor, int>& labels)
   {
     const Surface& s = s_;
     auto weight = boost::make_function_property_map<typename Surface::edge_descriptor, double>(
       [&s](typename Surface::edge_descriptor e) { return s.length(halfedge(e, s.mesh())); });
-    const CGAL::Hyperbolic_surface_2::Homotopy_basis<TriangleMesh> basis(tm_, p_, weight);
+    const CGAL::Hyperbolic_surface_2::Homotopy_basis<TriangleMesh> basis(tm_, p_, weight, opt_.basis_construction);
     if(basis.number_of_generators() != 2 * std::size_t(g_))
-      throw Invalid_generators_error("Shortest_word_solver: the greedy homotopy basis has " + std::to_string(basis.number_of_generators()) +
+      throw Invalid_generators_error("Shortest_word_solver: the homotopy basis has " + std::to_string(basis.number_of_generators()) +
                                      " loops instead of 2g");
     gens_.clear();
     for(std::size_t i = 0; i < basis.number_of_generators(); ++i) gens_.push_back(basis.loop(i));

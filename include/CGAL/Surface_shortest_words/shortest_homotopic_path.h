@@ -26,6 +26,7 @@ CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_vertex_snap_t)
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_use_geometry_t)       // Shortest_word_solver
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_shorten_generators_t) // Shortest_word_solver
 CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_make_canonical_t)     // Shortest_word_solver
+CGAL_HYPERBOLIC_NAMED_PARAMETER_TAG(ssw_basis_construction_t) // Shortest_word_solver
 
 namespace CGAL {
 namespace Surface_shortest_words {
@@ -75,8 +76,9 @@ void check_path_named_parameters()
   using CGAL::parameters::is_default_parameter;
   static_assert(is_default_parameter<NP, internal_np::ssw_use_geometry_t>::value &&
                 is_default_parameter<NP, internal_np::ssw_shorten_generators_t>::value &&
-                is_default_parameter<NP, internal_np::ssw_make_canonical_t>::value,
-                "use_geometry, shorten_generators, make_canonical are options of Shortest_word_solver");
+                is_default_parameter<NP, internal_np::ssw_make_canonical_t>::value &&
+                is_default_parameter<NP, internal_np::ssw_basis_construction_t>::value,
+                "use_geometry, shorten_generators, make_canonical, basis_construction are options of Shortest_word_solver");
   static_assert(loop || (is_default_parameter<NP, internal_np::ssw_tolerance_t>::value &&
                          is_default_parameter<NP, internal_np::number_of_iterations_t>::value),
                 "tolerance and number_of_iterations are options of shortest_homotopic_loop()");
