@@ -353,6 +353,9 @@ CGAL_HC_TEST_CASE(homotopy_basis_rejects_a_bad_base_vertex)
   lm[e0] = 0;
   CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, rps.base, lm), CGAL::Invalid_input_error);
   CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, rps.base, lm, HS::Basis_construction::COMPACT), CGAL::Invalid_input_error);
+  // a construction that is not one of the enumerators (a cast integer)
+  lm[e0] = 1;
+  CGAL_HC_CHECK_THROWS(HS::Homotopy_basis<Mesh>(m, rps.base, lm, static_cast<HS::Basis_construction>(7)), CGAL::Invalid_input_error);
   // two components
   Mesh m3 = rps.mesh, m4 = rps.mesh;
   m3.join(m4);

@@ -220,7 +220,8 @@ public:
     return r;
   }
 
-  /// translation length of the deck transformation of loop i: 2 acosh(|trace| / 2) (H^2), |period| (E^2)
+  /// translation length of the deck transformation of loop i: 2 acosh(|trace| / 2) (H^2), |period| (E^2);
+  /// throws as `absolute_trace()`
   double translation_length(std::size_t i) const
   {
     if(!hyperbolic_) return double(std::abs(hol_[i].b));

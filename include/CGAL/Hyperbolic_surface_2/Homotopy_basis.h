@@ -72,7 +72,8 @@ enum class Basis_construction
   `TriangleMesh` is a `FaceGraph`, closed and triangulated (loops and multi-edges allowed); the weights are a
   readable edge property map to `double` (positive, finite). Throws `CGAL::Invalid_mesh_error` if the mesh is
   not a connected closed orientable surface, `CGAL::Invalid_input_error` if the base vertex is not a vertex of
-  the mesh (e.g. a removed `Surface_mesh` vertex) or a weight is not positive and finite. Cost: O(n log n).
+  the mesh (e.g. a removed `Surface_mesh` vertex), a weight is not positive and finite or the construction is
+  not one of `Basis_construction`. Cost: O(n log n).
 */
 template <class TriangleMesh>
 class Homotopy_basis
@@ -89,6 +90,8 @@ public:
                  Basis_construction construction = Basis_construction::GREEDY)
     : tm_(&tm), base_(base), construction_(construction)
   {
+    if(construction != Basis_construction::GREEDY && construction != Basis_construction::COMPACT)
+      throw Invalid_input_error("Homotopy_basis: unknown Basis_construction " + std::to_string(int(construction)));
     build(weights);
     read_relator();
   }
